@@ -1,0 +1,161 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_CONSTRAINT_SOLVER_H
+#define BT_SHOCK_PROPAGATION_CONSTRAINT_SOLVER_H
+
+#include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
+#include "LinearMath/btThreads.h"  // BT_OVERRIDE
+
+#include "btContactGraph.h"
+#include "btShockPropagationSettings.h"
+#include "btShockPropagationStatistics.h"
+#include "btStackLayers.h"
+
+/// Velocity-based shock propagation (K. Erleben, ACM TOG 26(2), 2007) as a drop-in
+/// btConstraintSolver. It reuses Bullet's rows (btSequentialImpulseConstraintSolver's setup and
+/// projected Gauss-Seidel) and adds the contact graph, the stack layers and per-layer fixation.
+///
+/// One solveGroup call (dynamics phase), for the bodies, manifolds and joints Bullet hands over:
+///   1. graph and layers per connected component (btContactGraph, btStackLayers);
+///   2. no stacks (one layer): one ordinary solve of dt, correction first (skip the extra work);
+///   3. else dynamics(f dt) on the whole group, every body free        ("global pass");
+///   4. for k = 0 .. K-1 (bottom-up): fixate bodies of height k (btLayerFixation),
+///      correction(layer k), dynamics((1 - f) dt, layer k), un-fixate  ("layer pass").
+/// The second collision detection and global correction ("anti-rippling") need a world step:
+/// btShockPropagationDynamicsWorld runs them (correction phase of this solver).
+///
+/// Decisions of algorithm.md, as built:
+///  D1 fixation: infinite mass with velocity kept (default) or zero velocity (OpenTissue);
+///     btShockPropagationSettings::m_fixationMode. Rows are re-derived, bodies untouched.
+///  D2 f = m_weighting, default 0.1; f = 0 skips the global pass.
+///  D3 positions are not moved between CD(t) and the end of the dynamics phase except by the
+///     per-layer corrections (Bullet's push/turn write-back); positions then advance once with
+///     the final velocity, by Bullet's integrateTransforms. This equals the paper's split update
+///     x += f dt u1 + (1-f) dt u2 to first order and leaves free bodies exactly as stock Bullet.
+///  D4 per-layer corrections use the depths of CD(t) unchanged (as OpenTissue); the second
+///     correction after CD(t+dt) removes what they miss.
+///  D5 warm starting: one impulse cache per pass. btManifoldPoint::m_appliedImpulse holds the
+///     step's total normal impulse (global + layer pass; what apps read), m_prevRHS (unused by
+///     Bullet's rigid-body solvers) holds the global pass's share; each pass warm-starts from its
+///     own share. Lateral (friction) impulses are reported as the total of both passes; the layer
+///     pass warm-starts its friction from the global pass of the same step.
+///  D6 no Baumgarte in the dynamics passes (m_erp2 = 0 for contacts); Bullet's split-impulse
+///     pass is replaced by correction(): normal rows, rhs = penetration depth, positions only,
+///     full rotation (turn erp 1). Joint rows keep Bullet's m_erp.
+///  D7 iterations per pass: m_globalIterations, m_layerIterations, m_correctionIterations.
+///  D8 a manifold is a graph edge if a point is within m_graphContactThreshold; enabled joints are
+///     edges and are solved in the layer of their edge. No hysteresis.
+///  D9 components without a static or kinematic body are solved as one un-fixated layer.
+///  D10 restitution: Bullet's (restitution curve and m_restitutionVelocityThreshold) in every
+///     dynamics pass, against the fixated body's velocity.
+///
+/// Bad input: a body whose transform or velocity is NaN or Inf is left out of every pass (it
+/// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or
+/// holding a non-finite point are left out too. Counted in getStatistics().
+ATTRIBUTE_ALIGNED16(class)
+btShockPropagationConstraintSolver : public btSequentialImpulseConstraintSolver
+{
+public:
+	BT_DECLARE_ALIGNED_ALLOCATOR();
+
+	/// What solveGroup does; set by btShockPropagationDynamicsWorld, users need not touch it.
+	enum btPhase
+	{
+		BT_PHASE_DYNAMICS = 0,  ///< global pass + layered pass (solver-only drop-in does just this)
+		BT_PHASE_CORRECTION = 1 ///< global position correction after CD(t + dt)
+	};
+
+	btShockPropagationConstraintSolver();
+	explicit btShockPropagationConstraintSolver(const btShockPropagationSettings& settings);
+	virtual ~btShockPropagationConstraintSolver();
+
+	/// The paper's weighting value f in [0, 1]; values outside are clamped, NaN is ignored.
+	void setWeighting(btScalar f);
+	btScalar getWeighting() const { return m_settings.m_weighting; }
+
+	/// All settings at once (validated like setWeighting; negative iteration counts become 0).
+	void setSettings(const btShockPropagationSettings& settings);
+	const btShockPropagationSettings& getSettings() const { return m_settings; }
+
+	/// What the last step did (reset at the first solve of each step).
+	const btShockPropagationStatistics& getStatistics() const { return m_stats; }
+
+	void setPhase(btPhase phase) { m_phase = phase; }
+	btPhase getPhase() const { return m_phase; }
+	/// Start a new step's statistics (the world calls this; solver-only use resets in prepareSolve).
+	void resetStatistics() { m_stats = btShockPropagationStatistics(); }
+	btShockPropagationStatistics& getStatisticsForWriting() { return m_stats; }
+
+	virtual void prepareSolve(int numBodies, int numManifolds) BT_OVERRIDE;
+
+	virtual btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+								btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
+								btIDebugDraw* debugDrawer, btDispatcher* dispatcher) BT_OVERRIDE;
+
+protected:
+	/// Which solve is running (decides warm-start bookkeeping and whether correction runs).
+	enum btPass
+	{
+		BT_PASS_SINGLE,     ///< no stacks: one solve of dt with correction
+		BT_PASS_GLOBAL,     ///< dynamics(f dt), every body free
+		BT_PASS_LAYER,      ///< correction + dynamics((1 - f) dt) of one layer
+		BT_PASS_CORRECTION  ///< second, global correction
+	};
+
+	/// correction(): replaces Bullet's split-impulse iterations (positions only, normal rows).
+	virtual void solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+															   int numManifolds, btTypedConstraint** constraints, int numConstraints,
+															   const btContactSolverInfo& info, btIDebugDraw* debugDrawer) BT_OVERRIDE;
+
+	/// Writes the pass's contact impulses into the per-pass caches, then Bullet's write-back.
+	virtual btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info) BT_OVERRIDE;
+
+	/// One Bullet solve (setup, fixation for layers, iterations, finish) of the given subset.
+	void solvePass(btPass pass, btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+				   btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info, btScalar timeStep,
+				   btIDebugDraw* debugDrawer);
+
+private:
+	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+					 btTypedConstraint** constraints, int numConstraints);
+	void buildGraph();
+	void solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	void solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	void fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info);
+	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds);
+	btContactSolverInfo makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const;
+
+	btShockPropagationSettings m_settings;
+	btShockPropagationStatistics m_stats;
+	btPhase m_phase = BT_PHASE_DYNAMICS;
+	btPass m_pass = BT_PASS_SINGLE;
+	bool m_globalPassRan = false;
+	bool m_warnedNonFinite = false;
+
+	// Per-call working sets (kept to reuse their memory across steps).
+	btAlignedObjectArray<btCollisionObject*> m_bodies;     // graph nodes: healthy dynamic bodies
+	btAlignedObjectArray<btPersistentManifold*> m_manifolds;
+	btAlignedObjectArray<btTypedConstraint*> m_constraints;
+	btAlignedObjectArray<char> m_manifoldInLayer;
+	btContactGraph m_graph;
+	btStackLayers m_layers;
+	btAlignedObjectArray<btCollisionObject*> m_layerBodies;
+	btAlignedObjectArray<btPersistentManifold*> m_layerManifolds;
+	btAlignedObjectArray<btTypedConstraint*> m_layerConstraints;
+	btAlignedObjectArray<char> m_isFixatedSolverBody;
+	btAlignedObjectArray<btRigidBody*> m_fixatedBodies;
+};
+
+#endif  // BT_SHOCK_PROPAGATION_CONSTRAINT_SOLVER_H

@@ -1,0 +1,67 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H
+#define BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H
+
+#include "BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h"
+#include "LinearMath/btThreads.h"  // BT_OVERRIDE
+
+class btShockPropagationConstraintSolver;
+
+/// A btDiscreteDynamicsWorld that runs Erleben's full time step (ACM TOG 2007, "final algorithm"):
+///
+///   phase           what runs                                                      Bullet call
+///   collision       CD(t), islands                                                 performDiscreteCollisionDetection
+///                   dynamics(f dt); per layer {correction, dynamics((1-f) dt)}     solveConstraints (solver phase DYNAMICS)
+///                   positions advance with the final velocity                      integrateTransforms
+///   correction      CD(t + dt)                                                     performDiscreteCollisionDetection
+///                   correction() of every contact, all bodies free ("anti-rippling")  solveConstraints (solver phase CORRECTION)
+///
+/// Gravity is applied exactly once per step: stepSimulation adds it to each body's total force
+/// once, and the global and layer passes turn it into impulses of f dt and (1 - f) dt.
+/// Like btDiscreteDynamicsWorldMt, it behaves as btDiscreteDynamicsWorld otherwise: same
+/// constructor, same API, same callbacks (pre-tick, tick), same sleeping rules.
+ATTRIBUTE_ALIGNED16(class)
+btShockPropagationDynamicsWorld : public btDiscreteDynamicsWorld
+{
+public:
+	BT_DECLARE_ALIGNED_ALLOCATOR();
+
+	/// solver: nullptr makes the world create and own a btShockPropagationConstraintSolver; any
+	/// other solver must be a btShockPropagationConstraintSolver (the caller keeps ownership):
+	/// another type throws std::invalid_argument.
+	btShockPropagationDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache, btConstraintSolver* solver,
+									btCollisionConfiguration* collisionConfiguration);
+	virtual ~btShockPropagationDynamicsWorld();
+
+	/// Throws std::invalid_argument unless solver is a btShockPropagationConstraintSolver.
+	virtual void setConstraintSolver(btConstraintSolver* solver) BT_OVERRIDE;
+
+	btShockPropagationConstraintSolver* getShockPropagationSolver() { return m_shockSolver; }
+	const btShockPropagationConstraintSolver* getShockPropagationSolver() const { return m_shockSolver; }
+
+protected:
+	virtual void internalSingleStepSimulation(btScalar timeStep) BT_OVERRIDE;
+
+	/// CD(t), dynamics of the shock-propagation solver, position update.
+	void collisionPhase(btScalar timeStep);
+	/// CD(t + dt) and the global position correction.
+	void correctionPhase(btScalar timeStep);
+
+private:
+	btShockPropagationConstraintSolver* m_shockSolver;
+};
+
+#endif  // BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H

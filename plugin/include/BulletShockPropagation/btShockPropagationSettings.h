@@ -1,0 +1,83 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_SETTINGS_H
+#define BT_SHOCK_PROPAGATION_SETTINGS_H
+
+#include "LinearMath/btScalar.h"
+
+/// What a fixated (infinite-mass) body looks like to the layer above it (decision D1).
+enum btShockPropagationFixationMode
+{
+	/// Infinite mass, velocity kept: the upper bodies come to rest relative to the lower one,
+	/// which is right for stacks on moving platforms and stacks in free fall. Default.
+	BT_FIXATION_KEEP_VELOCITY = 0,
+	/// Infinite mass and zero velocity, as in Erleben's OpenTissue code (set_fixed).
+	BT_FIXATION_ZERO_VELOCITY = 1
+};
+
+/// Every tunable of the plugin, with its default, unit and reason. Defaults are set here only.
+/// Bullet's own btContactSolverInfo still supplies friction/restitution thresholds, warm-starting
+/// factor, SOR and joint ERP; its m_numIterations, m_erp2 and split-impulse fields are replaced by
+/// the fields below while the plugin solves.
+struct btShockPropagationSettings
+{
+	/// Weighting value f in [0, 1] (unitless): the fraction of the time step integrated by the
+	/// global pass with every body free, dynamics(f dt); the layered pass integrates (1 - f) dt.
+	/// Larger f passes more weight down the stack ("weight feeling") but lets an unconverged
+	/// global solve sag. 0.1 keeps stacks rigid while the f-pass still feels some load (D2).
+	/// f = 0 skips the global pass (OpenTissue would run an impulse-only pass there).
+	btScalar m_weighting = btScalar(0.1);
+
+	/// PGS sweeps of the global pass dynamics(f dt) (count). 10 as in OpenTissue (D7).
+	int m_globalIterations = 10;
+	/// PGS sweeps of each layer's dynamics((1 - f) dt) (count). A layer is a short problem
+	/// (one contact deep), so 10 sweeps converge it where a whole stack would need O(n^2) (D7).
+	int m_layerIterations = 10;
+	/// PGS sweeps of each position correction, per layer and in the second correction (count).
+	int m_correctionIterations = 10;
+
+	/// Run collision detection again at t + dt and a global position correction with every
+	/// body free ("anti-rippling", the paper's fix for ripples; needs btShockPropagationDynamicsWorld).
+	bool m_secondCorrection = true;
+
+	/// See btShockPropagationFixationMode (D1).
+	btShockPropagationFixationMode m_fixationMode = BT_FIXATION_KEEP_VELOCITY;
+
+	/// A manifold is a contact-graph edge if one of its points is at most this far apart
+	/// (metres; negative = penetrating). 0.02 m is Bullet's default contact breaking threshold,
+	/// i.e. every point Bullet keeps counts (D8). Manifolds farther apart are solved in the
+	/// global pass and corrections only.
+	btScalar m_graphContactThreshold = btScalar(0.02);
+
+	/// Fraction (unitless, 0..1] of each measured penetration removed by a correction. 1 removes
+	/// all of it, as OpenTissue's correction() does (erp = 1).
+	btScalar m_correctionFraction = btScalar(1);
+
+	/// Penetration left in place by corrections (metres). 0: like OpenTissue; a small slop
+	/// (for example 0.001 m) keeps resting contacts touching instead of hovering at zero distance.
+	btScalar m_correctionSlop = btScalar(0);
+
+	/// Two friction rows per contact point (a four-sided friction pyramid) instead of Bullet's
+	/// default one velocity-aligned row. Bullet's single row lets towers creep sideways
+	/// (bullet-notes.md); a layer is small, so the second row is cheap.
+	bool m_twoFrictionDirections = true;
+
+	/// Layered solve also when the contact graph has a single layer (no stacks). Off: such groups
+	/// get one ordinary solve of the full step (no f split), so scenes without stacks cost what
+	/// stock Bullet costs.
+	bool m_layerFlatGroups = false;
+};
+
+#endif  // BT_SHOCK_PROPAGATION_SETTINGS_H

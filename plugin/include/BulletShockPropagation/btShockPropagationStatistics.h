@@ -1,0 +1,38 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_STATISTICS_H
+#define BT_SHOCK_PROPAGATION_STATISTICS_H
+
+/// What the solver did in the last simulation step (summed over all solveGroup calls of the step).
+struct btShockPropagationStatistics
+{
+	int m_numGroups = 0;          ///< solveGroup calls (Bullet batches small islands into one)
+	int m_numComponents = 0;      ///< connected components of the contact graphs
+	int m_numLayers = 0;          ///< largest K (stack layers) of any group
+	int m_largestLayer = 0;       ///< most free bodies in one layer
+	int m_numFixatedBodies = 0;   ///< body fixations over all layers (a body is fixated at most once)
+	int m_numLayeredGroups = 0;   ///< groups solved layer by layer (the others had no stacks)
+	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (see README)
+	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
+
+	// Wall-clock time per phase (milliseconds).
+	double m_timeGraphMs = 0;            ///< contact graph and layers
+	double m_timeGlobalDynamicsMs = 0;   ///< dynamics(f dt), every body free
+	double m_timeLayersMs = 0;           ///< per layer: correction and dynamics((1 - f) dt)
+	double m_timeCollisionMs = 0;        ///< second collision detection at t + dt (world only)
+	double m_timeCorrectionMs = 0;       ///< second, global correction (world only)
+};
+
+#endif  // BT_SHOCK_PROPAGATION_STATISTICS_H

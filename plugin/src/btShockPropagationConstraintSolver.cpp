@@ -1,0 +1,579 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+// Velocity-based shock propagation: K. Erleben, "Velocity-Based Shock Propagation for Multibody
+// Dynamics Animation", ACM TOG 26(2), Article 12, 2007. The algorithm as built, and decisions
+// D1-D10, are described in btShockPropagationConstraintSolver.h.
+
+#include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
+
+#include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+#include "BulletShockPropagation/btLayerFixation.h"
+#include "LinearMath/btQuickprof.h"
+#include "LinearMath/btTransformUtil.h"
+
+#include <cstdio>
+
+namespace
+{
+bool isFiniteScalar(btScalar x)
+{
+	return x == x && x - x == btScalar(0);  // false for NaN and for +-Inf
+}
+
+bool isFiniteVector(const btVector3& v)
+{
+	return isFiniteScalar(v.x() + v.y() + v.z());
+}
+
+/// Transform and velocities finite (a NaN or Inf anywhere makes the sum non-finite).
+bool isHealthy(const btCollisionObject* object)
+{
+	const btTransform& t = object->getWorldTransform();
+	const btMatrix3x3& m = t.getBasis();
+	btScalar sum = t.getOrigin().x() + t.getOrigin().y() + t.getOrigin().z();
+	for (int i = 0; i < 3; ++i) sum += m[i].x() + m[i].y() + m[i].z();
+	if (const btRigidBody* rb = btRigidBody::upcast(object))
+	{
+		const btVector3& v = rb->getLinearVelocity();
+		const btVector3& w = rb->getAngularVelocity();
+		sum += v.x() + v.y() + v.z() + w.x() + w.y() + w.z();
+	}
+	return isFiniteScalar(sum);
+}
+
+/// A graph node: a dynamic body with finite mass (static, kinematic and zero-mass bodies are roots).
+bool isNode(const btCollisionObject* object)
+{
+	const btRigidBody* rb = btRigidBody::upcast(object);
+	return rb && !object->isStaticOrKinematicObject() && rb->getInvMass() != btScalar(0);
+}
+
+bool hasFinitePoints(const btPersistentManifold* manifold)
+{
+	for (int j = 0; j < manifold->getNumContacts(); ++j)
+	{
+		const btManifoldPoint& cp = manifold->getContactPoint(j);
+		if (!isFiniteScalar(cp.getDistance()) || !isFiniteVector(cp.m_normalWorldOnB) ||
+			!isFiniteVector(cp.getPositionWorldOnA()) || !isFiniteVector(cp.getPositionWorldOnB()))
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+/// One projected Gauss-Seidel update of a position row of correction():
+///   x_i <- max(0, x_i + (d_i - J_i dq) / A_ii),   dq = W J^T x   (push and turn "velocities").
+/// Unlike Bullet's split-impulse row it also enforces rows with zero depth (J_i dq >= 0).
+void resolvePositionRow(btSolverBody& bodyA, btSolverBody& bodyB, btSolverConstraint& c)
+{
+	btScalar delta = c.m_rhsPenetration - btScalar(c.m_appliedPushImpulse) * c.m_cfm;
+	delta -= (c.m_contactNormal1.dot(bodyA.internalGetPushVelocity()) + c.m_relpos1CrossNormal.dot(bodyA.internalGetTurnVelocity())) * c.m_jacDiagABInv;
+	delta -= (c.m_contactNormal2.dot(bodyB.internalGetPushVelocity()) + c.m_relpos2CrossNormal.dot(bodyB.internalGetTurnVelocity())) * c.m_jacDiagABInv;
+	const btScalar sum = btScalar(c.m_appliedPushImpulse) + delta;
+	if (sum < c.m_lowerLimit)
+	{
+		delta = c.m_lowerLimit - btScalar(c.m_appliedPushImpulse);
+		c.m_appliedPushImpulse = c.m_lowerLimit;
+	}
+	else
+	{
+		c.m_appliedPushImpulse = sum;
+	}
+	bodyA.internalApplyPushImpulse(c.m_contactNormal1 * bodyA.internalGetInvMass(), c.m_angularComponentA, delta);
+	bodyB.internalApplyPushImpulse(c.m_contactNormal2 * bodyB.internalGetInvMass(), c.m_angularComponentB, delta);
+}
+
+double millisecondsSince(btClock& clock)
+{
+	return double(clock.getTimeMicroseconds()) * 1e-3;
+}
+}  // namespace
+
+btShockPropagationConstraintSolver::btShockPropagationConstraintSolver()
+{
+}
+
+btShockPropagationConstraintSolver::btShockPropagationConstraintSolver(const btShockPropagationSettings& settings)
+{
+	setSettings(settings);
+}
+
+btShockPropagationConstraintSolver::~btShockPropagationConstraintSolver()
+{
+}
+
+void btShockPropagationConstraintSolver::setWeighting(btScalar f)
+{
+	if (f != f)
+	{
+		return;  // NaN: keep the current value
+	}
+	m_settings.m_weighting = btMax(btScalar(0), btMin(btScalar(1), f));
+}
+
+void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSettings& settings)
+{
+	const btScalar f = m_settings.m_weighting;
+	m_settings = settings;
+	m_settings.m_weighting = f;
+	setWeighting(settings.m_weighting);
+	m_settings.m_globalIterations = btMax(0, settings.m_globalIterations);
+	m_settings.m_layerIterations = btMax(0, settings.m_layerIterations);
+	m_settings.m_correctionIterations = btMax(0, settings.m_correctionIterations);
+	if (!(settings.m_correctionFraction >= 0 && settings.m_correctionFraction <= 1))
+		m_settings.m_correctionFraction = btShockPropagationSettings().m_correctionFraction;
+	if (!(settings.m_correctionSlop >= 0) || !isFiniteScalar(settings.m_correctionSlop))
+		m_settings.m_correctionSlop = btShockPropagationSettings().m_correctionSlop;
+	if (!isFiniteScalar(settings.m_graphContactThreshold))
+		m_settings.m_graphContactThreshold = btShockPropagationSettings().m_graphContactThreshold;
+}
+
+void btShockPropagationConstraintSolver::prepareSolve(int numBodies, int numManifolds)
+{
+	btSequentialImpulseConstraintSolver::prepareSolve(numBodies, numManifolds);
+	// Used alone in a stock world, each step starts with one dynamics solveConstraints call.
+	if (m_phase == BT_PHASE_DYNAMICS)
+	{
+		resetStatistics();
+	}
+}
+
+btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+														int numManifolds, btTypedConstraint** constraints, int numConstraints,
+														const btContactSolverInfo& info, btIDebugDraw* debugDrawer, btDispatcher* /*dispatcher*/)
+{
+	BT_PROFILE("btShockPropagationConstraintSolver::solveGroup");
+	filterInput(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints);
+	if (m_phase == BT_PHASE_CORRECTION)
+	{
+		solveCorrection(info, debugDrawer);
+	}
+	else
+	{
+		solveDynamics(info, debugDrawer);
+	}
+	return btScalar(0);
+}
+
+void btShockPropagationConstraintSolver::filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+													 int numManifolds, btTypedConstraint** constraints, int numConstraints)
+{
+	m_bodies.resize(0);
+	m_manifolds.resize(0);
+	m_constraints.resize(0);
+	int skippedBodies = 0;
+	for (int i = 0; i < numBodies; ++i)
+	{
+		if (!isHealthy(bodies[i]))
+		{
+			++skippedBodies;
+		}
+		else if (isNode(bodies[i]))
+		{
+			m_bodies.push_back(bodies[i]);
+		}
+	}
+	int skippedManifolds = 0;
+	for (int i = 0; i < numManifolds; ++i)
+	{
+		const btPersistentManifold* m = manifolds[i];
+		if (isHealthy(m->getBody0()) && isHealthy(m->getBody1()) && hasFinitePoints(m))
+			m_manifolds.push_back(manifolds[i]);
+		else
+			++skippedManifolds;
+	}
+	for (int i = 0; i < numConstraints; ++i)
+	{
+		if (isHealthy(&constraints[i]->getRigidBodyA()) && isHealthy(&constraints[i]->getRigidBodyB()))
+			m_constraints.push_back(constraints[i]);
+	}
+	if ((skippedBodies || skippedManifolds) && !m_warnedNonFinite)
+	{
+		m_warnedNonFinite = true;
+		std::fprintf(stderr,
+					 "BulletShockPropagation: %d body(ies) with a NaN/Inf transform or velocity and %d manifold(s) touching them "
+					 "are left out of the solve (warned once; see getStatistics().m_numSkippedBodies)\n",
+					 skippedBodies, skippedManifolds);
+	}
+	if (m_phase == BT_PHASE_DYNAMICS)
+	{
+		m_stats.m_numSkippedBodies += skippedBodies;
+		m_stats.m_numSkippedManifolds += skippedManifolds;
+	}
+}
+
+void btShockPropagationConstraintSolver::buildGraph()
+{
+	const int n = m_bodies.size();
+	m_graph.reset(n);
+	// Bullet keeps companion ids at -1 between solves; borrow them as node indices meanwhile.
+	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(i);
+	struct NodeOf
+	{
+		const btAlignedObjectArray<btCollisionObject*>& bodies;
+		int operator()(const btCollisionObject* object) const
+		{
+			const int id = object->getCompanionId();
+			return (id >= 0 && id < bodies.size() && bodies[id] == object) ? id : int(BT_CONTACT_GRAPH_ROOT);
+		}
+	} nodeOf{m_bodies};
+
+	for (int i = 0; i < m_manifolds.size(); ++i)
+	{
+		const btPersistentManifold* m = m_manifolds[i];
+		bool touching = false;
+		for (int j = 0; j < m->getNumContacts() && !touching; ++j)
+		{
+			touching = m->getContactPoint(j).getDistance() <= m_settings.m_graphContactThreshold;
+		}
+		if (touching)
+		{
+			m_graph.addEdge(nodeOf(m->getBody0()), nodeOf(m->getBody1()), i);
+		}
+	}
+	for (int i = 0; i < m_constraints.size(); ++i)
+	{
+		const btTypedConstraint* c = m_constraints[i];
+		if (c->isEnabled())
+		{
+			m_graph.addEdge(nodeOf(&c->getRigidBodyA()), nodeOf(&c->getRigidBodyB()), -(i + 1));
+		}
+	}
+	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(-1);
+	m_graph.buildAdjacency();
+	m_layers.build(m_graph);
+}
+
+void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	btClock clock;
+	buildGraph();
+	const int numLayers = m_layers.getNumLayers();
+	m_stats.m_numGroups += 1;
+	m_stats.m_numComponents += m_layers.getNumComponents();
+	m_stats.m_numLayers = btMax(m_stats.m_numLayers, numLayers);
+	m_stats.m_largestLayer = btMax(m_stats.m_largestLayer, m_layers.getLargestLayer());
+	m_stats.m_numFixatedBodies += m_layers.getTotalFixated();
+	m_stats.m_timeGraphMs += millisecondsSince(clock);
+
+	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
+	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
+	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
+	const btScalar dt = info.m_timeStep;
+
+	m_globalPassRan = false;
+	if (numLayers <= 1 && !m_settings.m_layerFlatGroups)
+	{
+		// No stacks: one ordinary solve of the whole step (correction, then dynamics(dt)).
+		clock.reset();
+		solvePass(BT_PASS_SINGLE, bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints, m_constraints.size(), info, dt, debugDrawer);
+		m_stats.m_timeLayersMs += millisecondsSince(clock);
+		return;
+	}
+	m_stats.m_numLayeredGroups += 1;
+
+	const btScalar f = m_settings.m_weighting;
+	clock.reset();
+	if (f > btScalar(0))
+	{
+		// dynamics(f dt): every body free, the whole group coupled ("weight feeling").
+		solvePass(BT_PASS_GLOBAL, bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints, m_constraints.size(), info, f * dt, debugDrawer);
+		m_globalPassRan = true;
+	}
+	m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
+
+	// Layers bottom-up: correction(layer k), dynamics((1 - f) dt, layer k) with height k fixated.
+	clock.reset();
+	const btScalar layerStep = btMax((btScalar(1) - f) * dt, SIMD_EPSILON * dt);
+	m_manifoldInLayer.resize(m_manifolds.size());
+	for (int i = 0; i < m_manifolds.size(); ++i) m_manifoldInLayer[i] = 0;
+	for (int k = 0; k < numLayers; ++k)
+	{
+		m_layerBodies.resize(0);
+		m_layerManifolds.resize(0);
+		m_layerConstraints.resize(0);
+		for (int i = 0; i < m_layers.getNumFreeBodies(k); ++i)
+		{
+			m_layerBodies.push_back(m_bodies[m_layers.getFreeBody(k, i)]);
+		}
+		for (int i = 0; i < m_layers.getNumLayerEdges(k); ++i)
+		{
+			const int source = m_graph.getEdge(m_layers.getLayerEdge(k, i)).m_source;
+			if (source >= 0)
+			{
+				m_layerManifolds.push_back(m_manifolds[source]);
+				m_manifoldInLayer[source] = 1;
+			}
+			else
+			{
+				m_layerConstraints.push_back(m_constraints[-source - 1]);
+			}
+		}
+		solvePass(BT_PASS_LAYER, m_layerBodies.size() ? &m_layerBodies[0] : 0, m_layerBodies.size(),
+				  m_layerManifolds.size() ? &m_layerManifolds[0] : 0, m_layerManifolds.size(),
+				  m_layerConstraints.size() ? &m_layerConstraints[0] : 0, m_layerConstraints.size(), info, layerStep, debugDrawer);
+	}
+
+	// Manifolds in no layer (beyond the graph threshold): their step impulse is the global pass's.
+	for (int i = 0; i < m_manifolds.size(); ++i)
+	{
+		if (m_manifoldInLayer[i]) continue;
+		btPersistentManifold* m = m_manifolds[i];
+		for (int j = 0; j < m->getNumContacts(); ++j)
+		{
+			btManifoldPoint& cp = m->getContactPoint(j);
+			if (m_globalPassRan)
+			{
+				cp.m_prevRHS = cp.m_appliedImpulse;
+			}
+			else
+			{
+				cp.m_appliedImpulse = cp.m_prevRHS = cp.m_appliedImpulseLateral1 = cp.m_appliedImpulseLateral2 = btScalar(0);
+			}
+		}
+	}
+	m_stats.m_timeLayersMs += millisecondsSince(clock);
+}
+
+btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const
+{
+	btContactSolverInfo p = info;
+	p.m_timeStep = timeStep;
+	p.m_numIterations = pass == BT_PASS_GLOBAL ? m_settings.m_globalIterations : pass == BT_PASS_CORRECTION ? m_settings.m_correctionIterations : m_settings.m_layerIterations;
+	p.m_erp2 = btScalar(0);  // D6: no Baumgarte in dynamics; correction() removes penetration
+	// The split-impulse slot of Bullet's iterations runs our correction() and its write-back
+	// moves positions by push * timeStep with full rotation.
+	p.m_splitImpulse = pass != BT_PASS_GLOBAL;
+	p.m_splitImpulseTurnErp = btScalar(1);
+	if (m_settings.m_twoFrictionDirections)
+	{
+		p.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+	}
+	if (pass == BT_PASS_CORRECTION)
+	{
+		p.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
+	}
+	return p;
+}
+
+void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds)
+{
+	// D5, per point between steps: m_appliedImpulse = total T, m_prevRHS = global share G.
+	// Bullet's setup warm-starts from m_appliedImpulse, so put this pass's own share there.
+	for (int i = 0; i < numManifolds; ++i)
+	{
+		btPersistentManifold* m = manifolds[i];
+		for (int j = 0; j < m->getNumContacts(); ++j)
+		{
+			btManifoldPoint& cp = m->getContactPoint(j);
+			const btScalar total = cp.m_appliedImpulse;
+			const btScalar global = cp.m_prevRHS;
+			if (pass == BT_PASS_GLOBAL)
+			{
+				cp.m_appliedImpulse = global;                           // warm start G
+				cp.m_prevRHS = btMax(btScalar(0), total - global);      // keep L for the layer pass
+			}
+			else if (pass == BT_PASS_LAYER)
+			{
+				if (m_globalPassRan)
+				{
+					cp.m_appliedImpulse = global;  // L kept above
+					cp.m_prevRHS = total;          // this step's G
+				}
+				else
+				{
+					cp.m_appliedImpulse = btMax(btScalar(0), total - global);
+					cp.m_prevRHS = btScalar(0);
+				}
+			}
+		}
+	}
+}
+
+void btShockPropagationConstraintSolver::solvePass(btPass pass, btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+												   int numManifolds, btTypedConstraint** constraints, int numConstraints,
+												   const btContactSolverInfo& info, btScalar timeStep, btIDebugDraw* debugDrawer)
+{
+	m_pass = pass;
+	const btContactSolverInfo passInfo = makePassInfo(pass, info, timeStep);
+	prepareWarmStart(pass, manifolds, numManifolds);
+	solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
+	if (pass == BT_PASS_LAYER)
+	{
+		fixateLowerBodies(numBodies, passInfo);
+	}
+	solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
+	solveGroupCacheFriendlyFinish(bodies, numBodies, passInfo);
+	for (int i = 0; i < m_fixatedBodies.size(); ++i)
+	{
+		m_fixatedBodies[i]->setCompanionId(-1);
+	}
+	m_fixatedBodies.resize(0);
+}
+
+void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info)
+{
+	// Solver bodies 0..numFreeBodies-1 are this layer's free bodies (convertBodies creates them
+	// first). Every other dynamic solver body was pulled in by a layer edge: it is a lower body
+	// (height k) and is fixated for this layer.
+	const int numSolverBodies = m_tmpSolverBodyPool.size();
+	m_isFixatedSolverBody.resize(numSolverBodies);
+	bool any = false;
+	for (int id = 0; id < numSolverBodies; ++id)
+	{
+		const btRigidBody* rb = m_tmpSolverBodyPool[id].m_originalBody;
+		const bool fixate = id >= numFreeBodies && rb && rb->getInvMass() != btScalar(0);
+		m_isFixatedSolverBody[id] = fixate;
+		any = any || fixate;
+	}
+	if (!any)
+	{
+		return;
+	}
+	btLayerFixationParams params;
+	params.m_mode = m_settings.m_fixationMode;
+	params.m_sor = info.m_sor;
+	params.m_jointDamping = info.m_damping;
+
+	struct Pool
+	{
+		btConstraintArray* rows;
+		btSolverRowKind kind;
+	} pools[] = {{&m_tmpSolverContactConstraintPool, BT_ROW_CONTACT},
+				 {&m_tmpSolverContactFrictionConstraintPool, BT_ROW_FRICTION},
+				 {&m_tmpSolverContactRollingFrictionConstraintPool, BT_ROW_ROLLING_FRICTION},
+				 {&m_tmpSolverNonContactConstraintPool, BT_ROW_JOINT}};
+	for (const Pool& pool : pools)
+	{
+		for (int i = 0; i < pool.rows->size(); ++i)
+		{
+			btSolverConstraint& row = (*pool.rows)[i];
+			const bool fixA = m_isFixatedSolverBody[row.m_solverBodyIdA] != 0;
+			const bool fixB = m_isFixatedSolverBody[row.m_solverBodyIdB] != 0;
+			if (fixA || fixB)
+			{
+				btFixateSolverRow(row, pool.kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], fixA, fixB, params);
+			}
+		}
+	}
+	for (int id = 0; id < numSolverBodies; ++id)
+	{
+		if (m_isFixatedSolverBody[id])
+		{
+			// Keep the companion id until the solve ends: Bullet looks joints' bodies up by it.
+			m_fixatedBodies.push_back(btFixateSolverBody(m_tmpSolverBodyPool[id], m_settings.m_fixationMode));
+		}
+	}
+}
+
+void btShockPropagationConstraintSolver::solveGroupCacheFriendlySplitImpulseIterations(btCollisionObject** /*bodies*/, int /*numBodies*/,
+																						 btPersistentManifold** /*manifolds*/, int /*numManifolds*/,
+																						 btTypedConstraint** /*constraints*/, int /*numConstraints*/,
+																						 const btContactSolverInfo& info, btIDebugDraw* /*debugDrawer*/)
+{
+	// correction() (algorithm.md 1.3): normal rows only, A x - d >= 0 _|_ x >= 0 with
+	// d_i = fraction * max(0, -distance_i - slop), dq = W J^T x moves positions only. Bullet's
+	// write-back integrates push * timeStep, hence the division by timeStep here.
+	if (m_pass == BT_PASS_GLOBAL || m_settings.m_correctionIterations <= 0)
+	{
+		return;
+	}
+	BT_PROFILE("correction");
+	const btScalar invTimeStep = btScalar(1) / info.m_timeStep;
+	const int numRows = m_tmpSolverContactConstraintPool.size();
+	for (int i = 0; i < numRows; ++i)
+	{
+		btSolverConstraint& c = m_tmpSolverContactConstraintPool[i];
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
+		const btScalar depth = -cp->getDistance() - m_settings.m_correctionSlop;
+		c.m_rhsPenetration = depth > btScalar(0) ? m_settings.m_correctionFraction * depth * invTimeStep * c.m_jacDiagABInv : btScalar(0);
+		c.m_appliedPushImpulse = btScalar(0);
+	}
+	for (int iteration = 0; iteration < m_settings.m_correctionIterations; ++iteration)
+	{
+		for (int i = 0; i < numRows; ++i)
+		{
+			btSolverConstraint& c = m_tmpSolverContactConstraintPool[i];
+			resolvePositionRow(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
+		}
+	}
+}
+
+btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info)
+{
+	// D5: per-pass caches and the step total (see prepareWarmStart).
+	const bool twoFrictionRows = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
+	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+	{
+		const btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
+		btManifoldPoint* cp = static_cast<btManifoldPoint*>(row.m_originalContactPoint);
+		const btScalar normal = row.m_appliedImpulse;
+		const btScalar lateral1 = m_tmpSolverContactFrictionConstraintPool[row.m_frictionIndex].m_appliedImpulse;
+		const btScalar lateral2 = twoFrictionRows ? btScalar(m_tmpSolverContactFrictionConstraintPool[row.m_frictionIndex + 1].m_appliedImpulse) : btScalar(0);
+		if (m_pass == BT_PASS_LAYER)
+		{
+			cp->m_appliedImpulse = normal + cp->m_prevRHS;  // total = layer + global share
+			cp->m_appliedImpulseLateral1 = lateral1 + (m_globalPassRan ? cp->m_appliedImpulseLateral1 : btScalar(0));
+			cp->m_appliedImpulseLateral2 = lateral2 + (m_globalPassRan ? cp->m_appliedImpulseLateral2 : btScalar(0));
+		}
+		else
+		{
+			cp->m_appliedImpulse = normal;
+			cp->m_appliedImpulseLateral1 = lateral1;
+			cp->m_appliedImpulseLateral2 = lateral2;
+			if (m_pass == BT_PASS_SINGLE)
+			{
+				cp->m_prevRHS = btScalar(0);
+			}
+		}
+	}
+	btContactSolverInfo bulletInfo = info;
+	bulletInfo.m_solverMode &= ~SOLVER_USE_WARMSTARTING;  // contacts are written above
+	return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, numBodies, bulletInfo);
+}
+
+void btShockPropagationConstraintSolver::solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	// The second, global correction after CD(t + dt): every dynamic body free, positions only.
+	btClock clock;
+	m_pass = BT_PASS_CORRECTION;
+	const btContactSolverInfo passInfo = makePassInfo(BT_PASS_CORRECTION, info, info.m_timeStep);
+	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
+	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
+	solveGroupCacheFriendlySetup(bodies, m_bodies.size(), manifolds, m_manifolds.size(), 0, 0, passInfo, debugDrawer);
+	solveGroupCacheFriendlySplitImpulseIterations(bodies, m_bodies.size(), manifolds, m_manifolds.size(), 0, 0, passInfo, debugDrawer);
+	for (int i = 0; i < m_tmpSolverBodyPool.size(); ++i)
+	{
+		btSolverBody& sb = m_tmpSolverBodyPool[i];
+		btRigidBody* rb = sb.m_originalBody;
+		if (!rb) continue;
+		if (!sb.internalGetPushVelocity().isZero() || !sb.internalGetTurnVelocity().isZero())
+		{
+			btTransform corrected;
+			btTransformUtil::integrateTransform(sb.m_worldTransform, sb.internalGetPushVelocity(), sb.internalGetTurnVelocity(), passInfo.m_timeStep, corrected);
+			rb->setWorldTransform(corrected);
+			rb->setInterpolationWorldTransform(corrected);
+		}
+		rb->setCompanionId(-1);
+	}
+	m_tmpSolverContactConstraintPool.resizeNoInitialize(0);
+	m_tmpSolverNonContactConstraintPool.resizeNoInitialize(0);
+	m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(0);
+	m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(0);
+	m_tmpSolverBodyPool.resizeNoInitialize(0);
+	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
+}

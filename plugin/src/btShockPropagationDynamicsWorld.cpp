@@ -1,0 +1,115 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "BulletShockPropagation/btShockPropagationDynamicsWorld.h"
+
+#include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
+#include "LinearMath/btQuickprof.h"
+
+#include <stdexcept>
+
+namespace
+{
+btShockPropagationConstraintSolver* requireShockSolver(btConstraintSolver* solver)
+{
+	btShockPropagationConstraintSolver* shock = dynamic_cast<btShockPropagationConstraintSolver*>(solver);
+	if (!shock)
+	{
+		throw std::invalid_argument(
+			"btShockPropagationDynamicsWorld needs a btShockPropagationConstraintSolver (or nullptr to create one); "
+			"to use another solver, use btDiscreteDynamicsWorld");
+	}
+	return shock;
+}
+
+btConstraintSolver* solverOrNew(btConstraintSolver* solver)
+{
+	return solver ? static_cast<btConstraintSolver*>(requireShockSolver(solver)) : new btShockPropagationConstraintSolver();
+}
+}  // namespace
+
+btShockPropagationDynamicsWorld::btShockPropagationDynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* pairCache,
+																 btConstraintSolver* solver, btCollisionConfiguration* collisionConfiguration)
+	: btDiscreteDynamicsWorld(dispatcher, pairCache, solverOrNew(solver), collisionConfiguration)
+{
+	m_shockSolver = static_cast<btShockPropagationConstraintSolver*>(m_constraintSolver);
+	// A solver we created is ours to delete (btDiscreteDynamicsWorld frees it with btAlignedFree,
+	// which matches the aligned operator new of Bullet classes).
+	m_ownsConstraintSolver = (solver == 0);
+}
+
+btShockPropagationDynamicsWorld::~btShockPropagationDynamicsWorld()
+{
+}
+
+void btShockPropagationDynamicsWorld::setConstraintSolver(btConstraintSolver* solver)
+{
+	btShockPropagationConstraintSolver* shock = requireShockSolver(solver);
+	btDiscreteDynamicsWorld::setConstraintSolver(solver);
+	m_shockSolver = shock;
+}
+
+void btShockPropagationDynamicsWorld::internalSingleStepSimulation(btScalar timeStep)
+{
+	BT_PROFILE("btShockPropagationDynamicsWorld::internalSingleStepSimulation");
+	m_shockSolver->resetStatistics();
+	if (m_internalPreTickCallback)
+	{
+		(*m_internalPreTickCallback)(this, timeStep);
+	}
+	// Damping and predicted transforms (for CCD); gravity already sits in each body's force.
+	predictUnconstraintMotion(timeStep);
+	btDispatcherInfo& dispatchInfo = getDispatchInfo();
+	dispatchInfo.m_timeStep = timeStep;
+	dispatchInfo.m_stepCount = 0;
+	dispatchInfo.m_debugDraw = getDebugDrawer();
+	createPredictiveContacts(timeStep);
+
+	collisionPhase(timeStep);
+	updateActions(timeStep);
+	if (m_shockSolver->getSettings().m_secondCorrection)
+	{
+		correctionPhase(timeStep);
+	}
+	updateActivationState(timeStep);
+
+	if (m_internalTickCallback)
+	{
+		(*m_internalTickCallback)(this, timeStep);
+	}
+}
+
+void btShockPropagationDynamicsWorld::collisionPhase(btScalar timeStep)
+{
+	BT_PROFILE("collisionPhase");
+	performDiscreteCollisionDetection();  // CD(t)
+	calculateSimulationIslands();
+	getSolverInfo().m_timeStep = timeStep;
+	m_shockSolver->setPhase(btShockPropagationConstraintSolver::BT_PHASE_DYNAMICS);
+	solveConstraints(getSolverInfo());  // dynamics(f dt), then the layers bottom-up
+	integrateTransforms(timeStep);
+}
+
+void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
+{
+	BT_PROFILE("correctionPhase");
+	btClock clock;
+	performDiscreteCollisionDetection();  // CD(t + dt)
+	const double collisionMs = double(clock.getTimeMicroseconds()) * 1e-3;
+	getSolverInfo().m_timeStep = timeStep;
+	m_shockSolver->setPhase(btShockPropagationConstraintSolver::BT_PHASE_CORRECTION);
+	solveConstraints(getSolverInfo());  // correction(), every body free
+	m_shockSolver->setPhase(btShockPropagationConstraintSolver::BT_PHASE_DYNAMICS);
+	m_shockSolver->getStatisticsForWriting().m_timeCollisionMs += collisionMs;
+}
