@@ -410,14 +410,25 @@ void btShockPropagationConstraintSolver::solvePass(btPass pass, btCollisionObjec
 {
 	m_pass = pass;
 	const btContactSolverInfo passInfo = makePassInfo(pass, info, timeStep);
-	prepareWarmStart(pass, manifolds, numManifolds);
-	solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
-	if (pass == BT_PASS_LAYER)
+	if (pass != BT_PASS_CORRECTION)
 	{
-		fixateLowerBodies(numBodies, passInfo);
+		prepareWarmStart(pass, manifolds, numManifolds);
 	}
-	solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
-	solveGroupCacheFriendlyFinish(bodies, numBodies, passInfo);
+	solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
+	if (pass == BT_PASS_LAYER || pass == BT_PASS_CORRECTION)
+	{
+		fixateLowerBodies(numBodies, passInfo);  // no-op when every converted body is free
+	}
+	if (pass == BT_PASS_CORRECTION)
+	{
+		solveGroupCacheFriendlySplitImpulseIterations(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
+		writeCorrectedTransforms(passInfo.m_timeStep);
+	}
+	else
+	{
+		solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
+		solveGroupCacheFriendlyFinish(bodies, numBodies, passInfo);
+	}
 	for (int i = 0; i < m_fixatedBodies.size(); ++i)
 	{
 		m_fixatedBodies[i]->setCompanionId(-1);
@@ -548,14 +559,44 @@ btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCol
 
 void btShockPropagationConstraintSolver::solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
 {
-	// The second, global correction after CD(t + dt): every dynamic body free, positions only.
+	// The second correction after CD(t + dt): positions only.
 	btClock clock;
-	m_pass = BT_PASS_CORRECTION;
-	const btContactSolverInfo passInfo = makePassInfo(BT_PASS_CORRECTION, info, info.m_timeStep);
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
-	solveGroupCacheFriendlySetup(bodies, m_bodies.size(), manifolds, m_manifolds.size(), 0, 0, passInfo, debugDrawer);
-	solveGroupCacheFriendlySplitImpulseIterations(bodies, m_bodies.size(), manifolds, m_manifolds.size(), 0, 0, passInfo, debugDrawer);
+	int numLayers = 1;
+	if (m_settings.m_layeredSecondCorrection)
+	{
+		buildGraph();
+		numLayers = m_layers.getNumLayers();
+	}
+	if (numLayers <= 1)
+	{
+		// Paper and OpenTissue: one global correction, every dynamic body free.
+		solvePass(BT_PASS_CORRECTION, bodies, m_bodies.size(), manifolds, m_manifolds.size(), 0, 0, info, info.m_timeStep, debugDrawer);
+	}
+	else
+	{
+		// Shock-propagated: bottom-up, each layer's lower bodies fixated, fresh depths of CD(t + dt).
+		for (int k = 0; k < numLayers; ++k)
+		{
+			m_layerBodies.resize(0);
+			m_layerManifolds.resize(0);
+			for (int i = 0; i < m_layers.getNumFreeBodies(k); ++i) m_layerBodies.push_back(m_bodies[m_layers.getFreeBody(k, i)]);
+			for (int i = 0; i < m_layers.getNumLayerEdges(k); ++i)
+			{
+				const int source = m_graph.getEdge(m_layers.getLayerEdge(k, i)).m_source;
+				if (source >= 0) m_layerManifolds.push_back(m_manifolds[source]);
+			}
+			solvePass(BT_PASS_CORRECTION, m_layerBodies.size() ? &m_layerBodies[0] : 0, m_layerBodies.size(),
+					  m_layerManifolds.size() ? &m_layerManifolds[0] : 0, m_layerManifolds.size(), 0, 0, info, info.m_timeStep, debugDrawer);
+		}
+	}
+	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
+}
+
+void btShockPropagationConstraintSolver::writeCorrectedTransforms(btScalar timeStep)
+{
+	// Positions only: velocities, contact impulses and forces stay as the dynamics phase left them.
 	for (int i = 0; i < m_tmpSolverBodyPool.size(); ++i)
 	{
 		btSolverBody& sb = m_tmpSolverBodyPool[i];
@@ -564,7 +605,7 @@ void btShockPropagationConstraintSolver::solveCorrection(const btContactSolverIn
 		if (!sb.internalGetPushVelocity().isZero() || !sb.internalGetTurnVelocity().isZero())
 		{
 			btTransform corrected;
-			btTransformUtil::integrateTransform(sb.m_worldTransform, sb.internalGetPushVelocity(), sb.internalGetTurnVelocity(), passInfo.m_timeStep, corrected);
+			btTransformUtil::integrateTransform(sb.m_worldTransform, sb.internalGetPushVelocity(), sb.internalGetTurnVelocity(), timeStep, corrected);
 			rb->setWorldTransform(corrected);
 			rb->setInterpolationWorldTransform(corrected);
 		}
@@ -575,5 +616,4 @@ void btShockPropagationConstraintSolver::solveCorrection(const btContactSolverIn
 	m_tmpSolverContactFrictionConstraintPool.resizeNoInitialize(0);
 	m_tmpSolverContactRollingFrictionConstraintPool.resizeNoInitialize(0);
 	m_tmpSolverBodyPool.resizeNoInitialize(0);
-	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }

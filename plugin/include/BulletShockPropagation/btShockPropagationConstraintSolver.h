@@ -111,7 +111,7 @@ protected:
 		BT_PASS_SINGLE,     ///< no stacks: one solve of dt with correction
 		BT_PASS_GLOBAL,     ///< dynamics(f dt), every body free
 		BT_PASS_LAYER,      ///< correction + dynamics((1 - f) dt) of one layer
-		BT_PASS_CORRECTION  ///< second, global correction
+		BT_PASS_CORRECTION  ///< second correction (whole group, or one layer of it)
 	};
 
 	/// correction(): replaces Bullet's split-impulse iterations (positions only, normal rows).
@@ -133,6 +133,7 @@ private:
 	void buildGraph();
 	void solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	void writeCorrectedTransforms(btScalar timeStep);
 	void fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info);
 	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds);
 	btContactSolverInfo makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const;

@@ -1,0 +1,137 @@
+#include "harness/Simulation.h"
+
+#include <BulletDynamics/ConstraintSolver/btNNCGConstraintSolver.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
+#include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
+#include <BulletShockPropagation/btShockPropagationCommon.h>
+
+#include <sstream>
+
+namespace harness
+{
+namespace
+{
+struct KindName
+{
+	const char* name;
+	SolverKind kind;
+	const char* description;
+};
+const KindName kKinds[] = {
+	{"si", SolverKind::StockSI, "stock btSequentialImpulseConstraintSolver"},
+	{"si2f", SolverKind::StockSI2Friction, "stock SI with two friction directions"},
+	{"nncg", SolverKind::NNCG, "stock btNNCGConstraintSolver"},
+	{"mlcp", SolverKind::MLCPDantzig, "stock btMLCPSolver with btDantzigSolver (cfm 1e-4)"},
+	{"sp", SolverKind::ShockWorld, "shock propagation, btShockPropagationDynamicsWorld"},
+	{"sp-solver", SolverKind::ShockSolverOnly, "shock propagation solver in a stock world"},
+};
+}  // namespace
+
+std::string solverKindNames()
+{
+	std::ostringstream out;
+	for (const KindName& k : kKinds) out << (&k == kKinds ? "" : ", ") << k.name;
+	out << " (append -subN for N sub-steps, e.g. si-sub4)";
+	return out.str();
+}
+
+bool parseSolverKind(const std::string& text, SolverSpec& spec, std::string& error)
+{
+	std::string base = text;
+	int substeps = 1;
+	const std::string::size_type sub = text.find("-sub");
+	if (sub != std::string::npos)
+	{
+		base = text.substr(0, sub);
+		const std::string count = text.substr(sub + 4);
+		char* end = nullptr;
+		const long n = std::strtol(count.c_str(), &end, 10);
+		if (count.empty() || *end != '\0' || n < 1 || n > 1000)
+		{
+			error = "bad sub-step count in '" + text + "' (want -subN with N in 1..1000)";
+			return false;
+		}
+		substeps = int(n);
+	}
+	for (const KindName& k : kKinds)
+	{
+		if (base == k.name)
+		{
+			spec.kind = k.kind;
+			spec.substeps = substeps;
+			return true;
+		}
+	}
+	error = "unknown solver '" + text + "'; valid: " + solverKindNames();
+	return false;
+}
+
+std::string SolverSpec::label() const
+{
+	std::ostringstream out;
+	for (const KindName& k : kKinds)
+		if (k.kind == kind) out << k.name;
+	if (substeps > 1) out << "-sub" << substeps;
+	out << " it=" << iterations;
+	if (kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly) out << " f=" << weighting;
+	return out.str();
+}
+
+Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
+	: m_spec(spec), m_timeStep(timeStep), m_gravity(gravity)
+{
+	m_configuration.reset(new btDefaultCollisionConfiguration());
+	m_dispatcher.reset(new btCollisionDispatcher(m_configuration.get()));
+	m_broadphase.reset(new btDbvtBroadphase());
+
+	const bool shock = spec.kind == SolverKind::ShockWorld || spec.kind == SolverKind::ShockSolverOnly;
+	if (shock)
+	{
+		btShockPropagationSettings settings;
+		settings.m_weighting = btScalar(spec.weighting);
+		settings.m_globalIterations = spec.iterations;
+		settings.m_layerIterations = spec.iterations;
+		settings.m_correctionIterations = spec.iterations;
+		m_shockSolver = new btShockPropagationConstraintSolver(settings);
+		m_solver.reset(m_shockSolver);
+	}
+	else if (spec.kind == SolverKind::NNCG)
+	{
+		m_solver.reset(new btNNCGConstraintSolver());
+	}
+	else if (spec.kind == SolverKind::MLCPDantzig)
+	{
+		m_mlcpInterface.reset(new btDantzigSolver());
+		m_solver.reset(new btMLCPSolver(m_mlcpInterface.get()));
+	}
+	else
+	{
+		m_solver.reset(new btSequentialImpulseConstraintSolver());
+	}
+
+	if (spec.kind == SolverKind::ShockWorld)
+		m_world.reset(new btShockPropagationDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
+	else
+		m_world.reset(new btDiscreteDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
+
+	m_world->setGravity(btVector3(0, btScalar(-gravity), 0));
+	btContactSolverInfo& info = m_world->getSolverInfo();
+	info.m_numIterations = spec.iterations;
+	if (spec.kind == SolverKind::StockSI2Friction) info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+	if (spec.kind == SolverKind::MLCPDantzig) info.m_globalCfm = btScalar(1e-4);
+}
+
+Simulation::~Simulation()
+{
+	// Scenes own their bodies and remove them from the world before it goes.
+	m_world.reset();
+	m_solver.reset();
+}
+
+void Simulation::step()
+{
+	const btScalar frame = btScalar(m_timeStep);
+	m_world->stepSimulation(frame, m_spec.substeps, frame / btScalar(m_spec.substeps));
+	++m_steps;
+}
+}  // namespace harness

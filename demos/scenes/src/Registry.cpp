@@ -1,0 +1,82 @@
+// The one table of every scene. Add a scene here and nowhere else; the demo, the tests and the
+// benchmarks iterate over this table.
+
+#include "scenes/Registry.h"
+
+#include "SceneCatalog.h"
+
+#include <stdexcept>
+
+namespace scenes
+{
+const std::vector<SceneEntry>& registry()
+{
+	static const std::vector<SceneEntry> table = {
+		// basic: one body, outcome known in closed form
+		{"basic", "single_box", "One 1 x 0.5 x 1 m box resting on the ground: the smallest resting contact.", createSingleBox, singleBoxParams()},
+		{"basic", "sliding_box", "A box launched along +x at v0 on the ground; Coulomb friction stops it after v0^2 / (2 mu g).", createSlidingBox, slidingBoxParams()},
+		{"basic", "free_fall", "A box falling from h0 with no contact: pure ballistic motion.", createFreeFall, freeFallParams()},
+
+		// seed: the source paper's presentation
+		{"seed", "sparse_stacking", "Several separate short stacks of cubes in a row: many small independent islands.", createSparseStacking, sparseStackingParams()},
+		{"seed", "dense_random", "Seeded random cubes dropped into a walled pit, settling into a compact pile.", createDenseRandom, denseRandomParams()},
+		{"seed", "pyramid", "Dense structured stacking: a 2-D pyramid of boxes, base * (base + 1) / 2 bodies (base 140: 9,870).", createPyramid, pyramidParams()},
+		{"seed", "wall", "Running-bond brick wall, 200 bricks in 16 rows; stock SI cannot hold it.", createWall, wallParams()},
+		{"seed", "round_tower", "Round tower of 20 rings of 16 bricks, alternate rings turned by half a brick.", createRoundTower, roundTowerParams()},
+
+		// hard: known failure modes of iterative solvers
+		{"hard", "tower", "Tall vertical stack of 20 boxes, optionally offset alternately; stock SI lets it creep and fall.", createTower, towerParams()},
+		{"hard", "mass_ratio_tower", "Four-box tower whose top box is 1000 times heavier than the rest.", createMassRatioTower, massRatioTowerParams()},
+		{"hard", "large_on_small", "A heavy slab bridging two light cubes under its ends (mass ratio 100).", createLargeOnSmall, largeOnSmallParams()},
+		{"hard", "seesaw", "Plank balanced on a static edge with a stack on its left end: it must tip left and carry the weight.", createSeesaw, seesawParams()},
+		{"hard", "door", "Lintel on two columns of equal height made of 2 and 4 boxes (goal post).", createDoor, doorParams()},
+		{"hard", "arch", "Semicircular arch of 17 wedge voussoirs on the ground; holds only through friction at every joint (hard case).", createArch, archParams()},
+		{"hard", "card_house", "House of thin cards: leaning pairs form tents, flat cards carry the next level (hard case).", createCardHouse, cardHouseParams()},
+		{"hard", "friction_ramp", "Cubes side by side on a 20 degree ramp, friction 0 to 0.75: those with mu < tan(angle) slide.", createFrictionRamp, frictionRampParams()},
+		{"hard", "overlap_recovery", "Small pyramid started with every row sunk 25% of a cube into its support; must separate without flinging.", createOverlapRecovery, overlapRecoveryParams()},
+		{"hard", "domino_row", "Row of 15 dominoes; the first is tipped and the chain reaction topples them all.", createDominoRow, dominoRowParams()},
+		{"hard", "leaning_tower", "Cubes each shifted 0.3 of their edge past the one below: the centre of mass overhangs, so it topples.", createLeaningTower, leaningTowerParams()},
+		{"hard", "hinge_bridge", "Planks chained by hinges between two posts, loaded with cubes; sags to an equilibrium and the joints hold.", createHingeBridge, hingeBridgeParams()},
+	};
+	return table;
+}
+
+const SceneEntry* findScene(const std::string& name)
+{
+	for (const SceneEntry& entry : registry())
+	{
+		if (entry.name == name)
+			return &entry;
+	}
+	return nullptr;
+}
+
+std::string sceneNames()
+{
+	std::string names;
+	for (const SceneEntry& entry : registry())
+	{
+		if (!names.empty())
+			names += ", ";
+		names += entry.name;
+	}
+	return names;
+}
+
+std::unique_ptr<SceneContent> createScene(btDiscreteDynamicsWorld& world, const std::string& name,
+										  const std::vector<std::pair<std::string, double>>& overrides)
+{
+	const SceneEntry* entry = findScene(name);
+	if (!entry)
+		throw std::invalid_argument("unknown scene '" + name + "'; valid scenes: " + sceneNames());
+	try
+	{
+		return entry->create(world, withOverrides(entry->defaults, overrides));
+	}
+	catch (const std::invalid_argument& error)
+	{
+		throw std::invalid_argument("scene '" + name + "': " + error.what());
+	}
+}
+
+}  // namespace scenes

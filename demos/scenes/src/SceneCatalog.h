@@ -1,0 +1,63 @@
+// Private list of every scene's create function and parameter list, grouped by the file that defines
+// them. src/Registry.cpp turns them into the public table; nothing else should need this header.
+
+#ifndef SCENES_SCENE_CATALOG_H
+#define SCENES_SCENE_CATALOG_H
+
+#include "scenes/Scene.h"
+
+#include <memory>
+
+namespace scenes
+{
+// StackScenes.cpp
+std::unique_ptr<SceneContent> createSingleBox(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createSlidingBox(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createFreeFall(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createTower(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createMassRatioTower(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createLargeOnSmall(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createLeaningTower(btDiscreteDynamicsWorld& world, const Params& params);
+Params singleBoxParams();
+Params slidingBoxParams();
+Params freeFallParams();
+Params towerParams();
+Params massRatioTowerParams();
+Params largeOnSmallParams();
+Params leaningTowerParams();
+
+// PyramidScenes.cpp
+std::unique_ptr<SceneContent> createSparseStacking(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createDenseRandom(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createPyramid(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createOverlapRecovery(btDiscreteDynamicsWorld& world, const Params& params);
+Params sparseStackingParams();
+Params denseRandomParams();
+Params pyramidParams();
+Params overlapRecoveryParams();
+
+// MasonryScenes.cpp
+std::unique_ptr<SceneContent> createWall(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createRoundTower(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createDoor(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createArch(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createCardHouse(btDiscreteDynamicsWorld& world, const Params& params);
+Params wallParams();
+Params roundTowerParams();
+Params doorParams();
+Params archParams();
+Params cardHouseParams();
+
+// MechanismScenes.cpp
+std::unique_ptr<SceneContent> createSeesaw(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createFrictionRamp(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createDominoRow(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createHingeBridge(btDiscreteDynamicsWorld& world, const Params& params);
+Params seesawParams();
+Params frictionRampParams();
+Params dominoRowParams();
+Params hingeBridgeParams();
+
+}  // namespace scenes
+
+#endif  // SCENES_SCENE_CATALOG_H
