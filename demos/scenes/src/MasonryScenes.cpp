@@ -4,16 +4,10 @@
 #include "SceneBuild.h"
 #include "SceneCatalog.h"
 
-#include <cmath>
-
 namespace scenes
 {
 namespace
 {
-const char* const kMuDescription = "combined friction coefficient of every contact";
-
-btScalar degreesToRadians(btScalar degrees) { return degrees * SIMD_PI / btScalar(180); }
-
 /// Area (m^2) and centroid of a simple polygon in the x-y plane, counter-clockwise.
 void polygonAreaCentroid(const std::vector<btVector3>& polygon, btScalar& area, btVector3& centroid)
 {
@@ -46,7 +40,7 @@ Params wallParams()
 		{"brickHeight", 0.2, "m", "brick extent along y"},
 		{"brickDepth", 0.2, "m", "brick extent along z"},
 		{"mass", 1, "kg", "mass of each brick"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 		{"gap", build::kSideGap, "m", "horizontal gap between neighbouring bricks"},
 	};
 }
@@ -95,7 +89,7 @@ Params roundTowerParams()
 		{"brickHeight", 0.2, "m", "brick extent along y"},
 		{"brickDepth", 0.3, "m", "brick extent across the ring (radial)"},
 		{"mass", 1, "kg", "mass of each brick"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 		{"gap", build::kSideGap, "m", "gap between the inner corners of neighbouring bricks"},
 	};
 }
@@ -156,7 +150,7 @@ Params doorParams()
 		{"lintelHeight", 0.25, "m", "lintel extent along y"},
 		{"lintelDepth", 0.5, "m", "lintel extent along z"},
 		{"lintelMass", 2, "kg", "mass of the lintel"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -213,7 +207,7 @@ Params archParams()
 		{"thickness", 0.4, "m", "radial thickness of the voussoirs"},
 		{"depth", 0.5, "m", "extent along z"},
 		{"density", 2000, "kg/m^3", "density of voussoirs and load boxes"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 		{"load", 0, "-", "boxes stacked on the keystone"},
 		{"loadSize", 0.2, "m", "edge of each load cube"},
 	};
@@ -302,7 +296,7 @@ Params cardHouseParams()
 {
 	return {
 		{"levels", 3, "-", "tents in the bottom level (and number of levels)"},
-		{"mu", 0.7, "-", kMuDescription},
+		{"mu", 0.7, "-", build::kMuDescription},
 		{"leanDeg", 25, "deg", "angle of each leaning card from the vertical"},
 		{"cardLength", 0.4, "m", "leaning card extent along its slope"},
 		{"cardThickness", 0.004, "m", "card thickness"},
@@ -315,7 +309,7 @@ std::unique_ptr<SceneContent> createCardHouse(btDiscreteDynamicsWorld& world, co
 {
 	const int levels = build::countParam(params, "levels", 1);
 	const btScalar mu = build::nonNegativeParam(params, "mu");
-	const btScalar lean = degreesToRadians(build::positiveParam(params, "leanDeg"));
+	const btScalar lean = build::degreesToRadians(build::positiveParam(params, "leanDeg"));
 	const btScalar length = build::positiveParam(params, "cardLength");
 	const btScalar thickness = build::positiveParam(params, "cardThickness");
 	const btScalar halfDepth = build::positiveParam(params, "cardDepth") / 2;

@@ -10,8 +10,6 @@ namespace scenes
 {
 namespace
 {
-const char* const kMuDescription = "combined friction coefficient of every contact";
-
 /// Half angle (rad) of the circular arc on which `n` equal chords span `ratio` times their total
 /// length: ratio = sin(phi) / (n sin(phi / n)), which falls from 1 at phi = 0 to 0 at phi = pi (n >= 2).
 double arcHalfAngle(int n, double ratio)
@@ -47,7 +45,7 @@ Params seesawParams()
 		{"boxSize", 0.5, "m", "cube edge"},
 		{"boxMass", 1, "kg", "mass of each cube"},
 		{"fulcrumSize", 0.5, "m", "edge of the static square prism, turned 45 degrees so an edge points up"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -110,7 +108,7 @@ Params frictionRampParams()
 
 std::unique_ptr<SceneContent> createFrictionRamp(btDiscreteDynamicsWorld& world, const Params& params)
 {
-	const btScalar angle = build::positiveParam(params, "angleDeg") * SIMD_PI / btScalar(180);
+	const btScalar angle = build::degreesToRadians(build::positiveParam(params, "angleDeg"));
 	const int count = build::countParam(params, "count", 1);
 	const btScalar muMax = build::nonNegativeParam(params, "muMax");
 	const btScalar rampHalfLength = build::positiveParam(params, "rampLength") / 2;
@@ -171,7 +169,7 @@ Params dominoRowParams()
 	return {
 		{"count", 15, "-", "number of dominoes"},
 		{"spacing", 0.5, "m", "distance between neighbouring domino centres along x"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 		{"thickness", 0.1, "m", "domino extent along x"},
 		{"height", 1, "m", "domino extent along y"},
 		{"width", 0.5, "m", "domino extent along z"},
@@ -235,7 +233,7 @@ Params hingeBridgeParams()
 		{"loadMass", 1, "kg", "mass of each load cube"},
 		{"slack", 0.02, "-", "(chain length - span) / span"},
 		{"deckHeight", 3, "m", "height of the end hinges on top of the posts"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 

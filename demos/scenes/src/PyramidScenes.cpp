@@ -11,8 +11,6 @@ namespace scenes
 {
 namespace
 {
-const char* const kMuDescription = "combined friction coefficient of every contact";
-
 /// A 2-D pyramid in the x-y plane: row r (0 = bottom) has base - r boxes, each row shifted by half a
 /// box. Neighbours in a row are `sideGap` apart; each row sinks `verticalOverlap` into the one below
 /// (and the bottom row into the ground). Returns the bodies row by row, left to right.
@@ -64,7 +62,7 @@ Params pyramidParams()
 		{"depth", 1, "m", "box extent along z"},
 		{"gap", build::kSideGap, "m", "horizontal gap between neighbours in a row"},
 		{"mass", 1, "kg", "mass of each box"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -95,7 +93,7 @@ Params overlapRecoveryParams()
 		{"overlap", 0.25, "-", "initial penetration of each row into its support, as a fraction of the edge"},
 		{"size", 0.5, "m", "cube edge"},
 		{"mass", 1, "kg", "mass of each cube"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -130,7 +128,7 @@ Params sparseStackingParams()
 		{"size", 0.5, "m", "cube edge"},
 		{"spacing", 2, "m", "distance between neighbouring stack centres"},
 		{"mass", 1, "kg", "mass of each cube"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -178,7 +176,7 @@ Params denseRandomParams()
 		{"width", 4, "m", "inner side of the square pit between the walls"},
 		{"dropHeight", 1, "m", "height of the lowest point of the grid above the ground"},
 		{"mass", 1, "kg", "mass of each cube"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 

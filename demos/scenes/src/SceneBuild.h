@@ -29,12 +29,17 @@ constexpr double kMinGroundHalfWidth = 50.0;
 /// Largest count any parameter may ask for, a guard against typos such as n=1e9.
 constexpr int kMaxCount = 1000000;
 
+/// Description of the "mu" parameter most scenes have.
+constexpr const char* kMuDescription = "combined friction coefficient of every contact";
+
 /// The standard box of the project's measurements: 1 x 0.5 x 1 m (width x height x depth).
 inline btVector3 standardBoxHalfExtents() { return btVector3(btScalar(0.5), btScalar(0.25), btScalar(0.5)); }
 
 /// Adds the static ground slab (top face at y = 0, half width max(kMinGroundHalfWidth,
 /// footprintHalfWidth)) with combined friction `mu`, names it "ground" and returns it.
 btRigidBody* addGround(SceneContent& content, btScalar footprintHalfWidth, btScalar mu);
+
+inline btScalar degreesToRadians(btScalar degrees) { return degrees * SIMD_PI / btScalar(180); }
 
 /// Pure translation.
 btTransform at(btScalar x, btScalar y, btScalar z);

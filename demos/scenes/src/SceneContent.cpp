@@ -61,9 +61,11 @@ double getParam(const Params& params, const std::string& name)
 Params withOverrides(const Params& defaults, const std::vector<std::pair<std::string, double>>& overrides)
 {
 	Params result = defaults;
-	for (const auto& [name, value] : overrides)
+	for (const std::pair<std::string, double>& entry : overrides)
 	{
-		auto it = std::find_if(result.begin(), result.end(), [&](const Param& param) { return param.name == name; });
+		const std::string& name = entry.first;
+		const double value = entry.second;
+		auto it = std::find_if(result.begin(), result.end(), [&name](const Param& param) { return param.name == name; });
 		if (it == result.end())
 			throw std::invalid_argument("unknown scene parameter '" + name + "'; valid parameters: " + listNames(defaults));
 		if (!std::isfinite(value))

@@ -8,8 +8,6 @@ namespace scenes
 {
 namespace
 {
-const char* const kMuDescription = "combined friction coefficient of every contact";
-
 /// One standard 1 x 0.5 x 1 m box named "box" whose centre is at `centre`, on a default ground.
 std::unique_ptr<SceneContent> oneBoxScene(btDiscreteDynamicsWorld& world, btScalar mass, btScalar mu, const btVector3& centre)
 {
@@ -31,7 +29,7 @@ btScalar restingStandardBoxY() { return build::columnCentreY(0, build::standardB
 Params singleBoxParams()
 {
 	return {
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 		{"mass", 1, "kg", "mass of the box"},
 	};
 }
@@ -52,7 +50,7 @@ std::unique_ptr<SceneContent> createSingleBox(btDiscreteDynamicsWorld& world, co
 Params slidingBoxParams()
 {
 	return {
-		{"mu", 0.5, "-", kMuDescription},
+		{"mu", 0.5, "-", build::kMuDescription},
 		{"v0", 5, "m/s", "initial speed along +x"},
 		{"mass", 1, "kg", "mass of the box"},
 	};
@@ -105,7 +103,7 @@ Params towerParams()
 		{"height", 0.5, "m", "box extent along y"},
 		{"depth", 1, "m", "box extent along z"},
 		{"mass", 1, "kg", "mass of each box"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 		{"offset", 0, "m", "x offset of each level, alternating + and - (0: perfectly aligned)"},
 	};
 }
@@ -145,7 +143,7 @@ Params massRatioTowerParams()
 		{"n", 4, "-", "number of boxes, the heavy one included"},
 		{"ratio", 1000, "-", "mass of the top box / mass of each other box"},
 		{"mass", 1, "kg", "mass of each light box"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -186,7 +184,7 @@ Params largeOnSmallParams()
 		{"largeWidth", 4, "m", "extent of the large box along x"},
 		{"largeHeight", 0.5, "m", "extent of the large box along y"},
 		{"largeDepth", 1, "m", "extent of the large box along z"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
@@ -227,7 +225,7 @@ Params leaningTowerParams()
 		{"shift", 0.3, "-", "x shift of each cube relative to the one below, as a fraction of the edge"},
 		{"size", 0.5, "m", "cube edge"},
 		{"mass", 1, "kg", "mass of each cube"},
-		{"mu", 0.6, "-", kMuDescription},
+		{"mu", 0.6, "-", build::kMuDescription},
 	};
 }
 
