@@ -26,7 +26,7 @@ struct Options
 	std::string scene = "wall";
 	std::vector<std::string> solvers{"si", "sp"};
 	std::vector<int> iterations{10};
-	std::vector<double> weightings{0.1};
+	std::vector<double> weightings{btShockPropagationSettings().m_weighting};
 	double duration = 10.0;
 	double timeStep = 1.0 / 60.0;
 	std::vector<std::pair<std::string, double>> params;
@@ -98,7 +98,7 @@ void usage()
 				 "  --solvers A,B,...     " << harness::solverKindNames() << "\n"
 				 "                        (default si,sp)\n"
 				 "  --iterations N,M,...  PGS iterations, each run for every solver (default 10)\n"
-				 "  --f F,G,...           plugin weighting values in [0,1] (default 0.1)\n"
+				 "  --f F,G,...           plugin weighting values in [0,1] (default 0.5)\n"
 				 "  --duration S          simulated seconds (default 10)\n"
 				 "  --dt S                time step in seconds (default 1/60)\n"
 				 "  --param NAME=VALUE    scene parameter (repeatable); --list shows them\n"

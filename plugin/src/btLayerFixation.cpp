@@ -49,6 +49,10 @@ btScalar removedVelocity(const btSolverBody& body, const btVector3& linearAxis, 
 	{
 		u += linearAxis.dot(body.m_linearVelocity) + angularAxis.dot(body.m_angularVelocity);
 	}
+	else if (mode == BT_FIXATION_KEEP_LINEAR_VELOCITY)
+	{
+		u += angularAxis.dot(body.m_angularVelocity);
+	}
 	return u;
 }
 }  // namespace

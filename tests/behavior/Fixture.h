@@ -3,6 +3,7 @@
 // 10 iterations per pass unless the test says otherwise.
 #pragma once
 
+#include <BulletShockPropagation/btShockPropagationSettings.h>
 #include <harness/Metrics.h>
 #include <harness/Simulation.h>
 #include <scenes/Registry.h>
@@ -18,7 +19,7 @@ namespace spec
 constexpr double kTimeStepSeconds = 1.0 / 60.0;
 constexpr double kMaxDriftMeters = 0.01;
 
-inline harness::SolverSpec shock(int iterations = 10, double f = 0.1)
+inline harness::SolverSpec shock(int iterations = 10, double f = btShockPropagationSettings().m_weighting)
 {
 	harness::SolverSpec s;
 	s.kind = harness::SolverKind::ShockWorld;
@@ -27,7 +28,7 @@ inline harness::SolverSpec shock(int iterations = 10, double f = 0.1)
 	return s;
 }
 
-inline harness::SolverSpec shockSolverOnly(int iterations = 10, double f = 0.1)
+inline harness::SolverSpec shockSolverOnly(int iterations = 10, double f = btShockPropagationSettings().m_weighting)
 {
 	harness::SolverSpec s = shock(iterations, f);
 	s.kind = harness::SolverKind::ShockSolverOnly;

@@ -37,15 +37,19 @@ subject to the following restrictions:
 /// btShockPropagationDynamicsWorld runs them (correction phase of this solver).
 ///
 /// Decisions of algorithm.md, as built:
-///  D1 fixation: infinite mass with velocity kept (default) or zero velocity (OpenTissue);
-///     btShockPropagationSettings::m_fixationMode. Rows are re-derived, bodies untouched.
-///  D2 f = m_weighting, default 0.1; f = 0 skips the global pass.
+///  D1 fixation: infinite mass with the linear velocity kept (default), the full velocity kept,
+///     or zero velocity (OpenTissue); btShockPropagationSettings::m_fixationMode. Rows are
+///     re-derived, bodies untouched (btLayerFixation.h).
+///  D2 f = m_weighting, default 0.5 (measured, README); f = 0 skips the global pass.
 ///  D3 positions are not moved between CD(t) and the end of the dynamics phase except by the
 ///     per-layer corrections (Bullet's push/turn write-back); positions then advance once with
 ///     the final velocity, by Bullet's integrateTransforms. This equals the paper's split update
 ///     x += f dt u1 + (1-f) dt u2 to first order and leaves free bodies exactly as stock Bullet.
 ///  D4 per-layer corrections use the depths of CD(t) unchanged (as OpenTissue); the second
-///     correction after CD(t+dt) removes what they miss.
+///     correction after CD(t+dt) removes what they miss. (Updating the depths by the fixated
+///     body's own correction, as TGS contact anchors do, was measured worse on the wall.) The second
+///     correction is layered by default (m_layeredSecondCorrection): the paper's global form
+///     squeezes mass-ratio stacks apart.
 ///  D5 warm starting: one impulse cache per pass. btManifoldPoint::m_appliedImpulse holds the
 ///     step's total normal impulse (global + layer pass; what apps read), m_prevRHS (unused by
 ///     Bullet's rigid-body solvers) holds the global pass's share; each pass warm-starts from its

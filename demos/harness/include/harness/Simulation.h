@@ -27,7 +27,7 @@ struct SolverSpec
 {
 	SolverKind kind = SolverKind::StockSI;
 	int iterations = 10;  ///< PGS sweeps (for the plugin: every pass)
-	double weighting = 0.1;  ///< f, plugin only
+	double weighting = 0.5;  ///< f, plugin only (the plugin's default)
 	int substeps = 1;     ///< sub-steps per frame (stepSimulation with dt / substeps)
 	std::string label() const;
 };
