@@ -32,6 +32,8 @@ struct Options
 	std::vector<std::pair<std::string, double>> params;
 	std::string csvPath, jsonPath, seriesPath;
 	bool progress = true;
+	int fixationMode = -1;
+	bool globalSecondCorrection = false;
 };
 
 struct Run
@@ -104,6 +106,8 @@ void usage()
 				 "  --param NAME=VALUE    scene parameter (repeatable); --list shows them\n"
 				 "  --csv FILE            summary table as CSV\n"
 				 "  --json FILE           summary and per-step series as JSON\n"
+				 "  --fixation MODE       plugin fixation: linear (default), keep, zero\n"
+				 "  --global-correction   plugin: the paper's un-layered second correction\n"
 				 "  --no-progress         no progress bar\n";
 }
 
@@ -145,6 +149,15 @@ Options parse(int argc, char** argv)
 		else if (a == "--csv") o.csvPath = value();
 		else if (a == "--json") o.jsonPath = value();
 		else if (a == "--no-progress") o.progress = false;
+		else if (a == "--global-correction") o.globalSecondCorrection = true;
+		else if (a == "--fixation")
+		{
+			const std::string m = value();
+			if (m == "keep") o.fixationMode = BT_FIXATION_KEEP_VELOCITY;
+			else if (m == "zero") o.fixationMode = BT_FIXATION_ZERO_VELOCITY;
+			else if (m == "linear") o.fixationMode = BT_FIXATION_KEEP_LINEAR_VELOCITY;
+			else fail("unknown fixation mode '" + m + "'; valid: linear, keep, zero");
+		}
 		else fail("unknown option '" + a + "'");
 	}
 	if (!scenes::findScene(o.scene)) fail("unknown scene '" + o.scene + "'; valid scenes: " + scenes::sceneNames());
@@ -179,6 +192,8 @@ std::vector<harness::SolverSpec> expand(const Options& o)
 				harness::SolverSpec s = base;
 				s.iterations = n;
 				s.weighting = o.weightings[k];
+				s.fixationMode = o.fixationMode;
+				s.globalSecondCorrection = o.globalSecondCorrection;
 				specs.push_back(s);
 			}
 		}

@@ -73,7 +73,13 @@ std::string SolverSpec::label() const
 		if (k.kind == kind) out << k.name;
 	if (substeps > 1) out << "-sub" << substeps;
 	out << " it=" << iterations;
-	if (kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly) out << " f=" << weighting;
+	if (kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly)
+	{
+		out << " f=" << weighting;
+		const char* modes[] = {"keep", "zero", "linear"};
+		if (fixationMode >= 0 && fixationMode < 3) out << " fix=" << modes[fixationMode];
+		if (globalSecondCorrection) out << " globalcorr";
+	}
 	return out.str();
 }
 
@@ -92,6 +98,8 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 		settings.m_globalIterations = spec.iterations;
 		settings.m_layerIterations = spec.iterations;
 		settings.m_correctionIterations = spec.iterations;
+		if (spec.fixationMode >= 0) settings.m_fixationMode = btShockPropagationFixationMode(spec.fixationMode);
+		settings.m_layeredSecondCorrection = !spec.globalSecondCorrection;
 		m_shockSolver = new btShockPropagationConstraintSolver(settings);
 		m_solver.reset(m_shockSolver);
 	}

@@ -29,6 +29,8 @@ struct SolverSpec
 	int iterations = 10;  ///< PGS sweeps (for the plugin: every pass)
 	double weighting = 0.5;  ///< f, plugin only (the plugin's default)
 	int substeps = 1;     ///< sub-steps per frame (stepSimulation with dt / substeps)
+	int fixationMode = -1;          ///< plugin only: btShockPropagationFixationMode, -1 = default
+	bool globalSecondCorrection = false;  ///< plugin only: the paper's un-layered second correction
 	std::string label() const;
 };
 
