@@ -303,26 +303,7 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 	for (int i = 0; i < m_manifolds.size(); ++i) m_manifoldInLayer[i] = 0;
 	for (int k = 0; k < numLayers; ++k)
 	{
-		m_layerBodies.resize(0);
-		m_layerManifolds.resize(0);
-		m_layerConstraints.resize(0);
-		for (int i = 0; i < m_layers.getNumFreeBodies(k); ++i)
-		{
-			m_layerBodies.push_back(m_bodies[m_layers.getFreeBody(k, i)]);
-		}
-		for (int i = 0; i < m_layers.getNumLayerEdges(k); ++i)
-		{
-			const int source = m_graph.getEdge(m_layers.getLayerEdge(k, i)).m_source;
-			if (source >= 0)
-			{
-				m_layerManifolds.push_back(m_manifolds[source]);
-				m_manifoldInLayer[source] = 1;
-			}
-			else
-			{
-				m_layerConstraints.push_back(m_constraints[-source - 1]);
-			}
-		}
+		collectLayer(k, &m_manifoldInLayer);
 		solvePass(BT_PASS_LAYER, m_layerBodies.size() ? &m_layerBodies[0] : 0, m_layerBodies.size(),
 				  m_layerManifolds.size() ? &m_layerManifolds[0] : 0, m_layerManifolds.size(),
 				  m_layerConstraints.size() ? &m_layerConstraints[0] : 0, m_layerConstraints.size(), info, layerStep, debugDrawer);
@@ -434,6 +415,30 @@ void btShockPropagationConstraintSolver::solvePass(btPass pass, btCollisionObjec
 		m_fixatedBodies[i]->setCompanionId(-1);
 	}
 	m_fixatedBodies.resize(0);
+}
+
+void btShockPropagationConstraintSolver::collectLayer(int layer, btAlignedObjectArray<char>* manifoldInLayer)
+{
+	m_layerBodies.resize(0);
+	m_layerManifolds.resize(0);
+	m_layerConstraints.resize(0);
+	for (int i = 0; i < m_layers.getNumFreeBodies(layer); ++i)
+	{
+		m_layerBodies.push_back(m_bodies[m_layers.getFreeBody(layer, i)]);
+	}
+	for (int i = 0; i < m_layers.getNumLayerEdges(layer); ++i)
+	{
+		const int source = m_graph.getEdge(m_layers.getLayerEdge(layer, i)).m_source;
+		if (source >= 0)
+		{
+			m_layerManifolds.push_back(m_manifolds[source]);
+			if (manifoldInLayer) (*manifoldInLayer)[source] = 1;
+		}
+		else
+		{
+			m_layerConstraints.push_back(m_constraints[-source - 1]);
+		}
+	}
 }
 
 void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info)
@@ -579,14 +584,7 @@ void btShockPropagationConstraintSolver::solveCorrection(const btContactSolverIn
 		// Shock-propagated: bottom-up, each layer's lower bodies fixated, fresh depths of CD(t + dt).
 		for (int k = 0; k < numLayers; ++k)
 		{
-			m_layerBodies.resize(0);
-			m_layerManifolds.resize(0);
-			for (int i = 0; i < m_layers.getNumFreeBodies(k); ++i) m_layerBodies.push_back(m_bodies[m_layers.getFreeBody(k, i)]);
-			for (int i = 0; i < m_layers.getNumLayerEdges(k); ++i)
-			{
-				const int source = m_graph.getEdge(m_layers.getLayerEdge(k, i)).m_source;
-				if (source >= 0) m_layerManifolds.push_back(m_manifolds[source]);
-			}
+			collectLayer(k, 0);  // joints take no part in the correction
 			solvePass(BT_PASS_CORRECTION, m_layerBodies.size() ? &m_layerBodies[0] : 0, m_layerBodies.size(),
 					  m_layerManifolds.size() ? &m_layerManifolds[0] : 0, m_layerManifolds.size(), 0, 0, info, info.m_timeStep, debugDrawer);
 		}

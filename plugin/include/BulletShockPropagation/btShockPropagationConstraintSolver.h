@@ -138,6 +138,8 @@ private:
 	void solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void writeCorrectedTransforms(btScalar timeStep);
+	/// Fill m_layerBodies / m_layerManifolds / m_layerConstraints with layer k (marking its manifolds).
+	void collectLayer(int layer, btAlignedObjectArray<char>* manifoldInLayer);
 	void fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info);
 	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds);
 	btContactSolverInfo makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const;
