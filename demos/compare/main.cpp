@@ -1,11 +1,12 @@
 // bsp_demo: one registry scene under several solvers, side by side in lockstep, with a
 // comparison table (and CSV / JSON for charts). The main demo of BulletShockPropagation.
+#include "Report.h"
+#include "SeedStudies.h"
+
 #include <BulletShockPropagation/btShockPropagationCommon.h>
-#include <harness/Metrics.h>
-#include <harness/Simulation.h>
+#include <harness/Trial.h>
 #include <scenes/Registry.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,13 +15,10 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace
 {
-const double kStandingDriftMeters = 0.01;  // a body that moved more than this has "fallen"
-
 struct Options
 {
 	std::string scene = "wall";
@@ -30,29 +28,11 @@ struct Options
 	double duration = 10.0;
 	double timeStep = 1.0 / 60.0;
 	std::vector<std::pair<std::string, double>> params;
-	std::string csvPath, jsonPath, seriesPath;
+	std::string csvPath, jsonPath;
 	bool progress = true;
 	int fixationMode = -1;
 	bool globalSecondCorrection = false;
-};
-
-struct Run
-{
-	harness::SolverSpec spec;
-	std::unique_ptr<harness::Simulation> sim;
-	std::unique_ptr<scenes::SceneContent> scene;
-	std::vector<btRigidBody*> bodies;
-	std::unique_ptr<harness::DriftTracker> drift;
-	double weight = 0;
-	// results
-	double collapseTime = -1;
-	double maxDrift = 0, maxPenetration = 0;
-	double keSum = 0, reactionSum = 0;
-	int lastSecondSteps = 0;
-	double seconds = 0;
-	int layers = 0;
-	bool nonFinite = false;
-	std::vector<double> seriesDrift, seriesPenetration, seriesKE, seriesReaction;
+	bool seed = false;
 };
 
 [[noreturn]] void fail(const std::string& message)
@@ -108,7 +88,8 @@ void usage()
 				 "  --json FILE           summary and per-step series as JSON\n"
 				 "  --fixation MODE       plugin fixation: linear (default), keep, zero\n"
 				 "  --global-correction   plugin: the paper's un-layered second correction\n"
-				 "  --no-progress         no progress bar\n";
+				 "  --no-progress         no progress bar\n"
+				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
 }
 
 void listScenes()
@@ -149,6 +130,7 @@ Options parse(int argc, char** argv)
 		else if (a == "--csv") o.csvPath = value();
 		else if (a == "--json") o.jsonPath = value();
 		else if (a == "--no-progress") o.progress = false;
+		else if (a == "--seed") o.seed = true;
 		else if (a == "--global-correction") o.globalSecondCorrection = true;
 		else if (a == "--fixation")
 		{
@@ -201,122 +183,46 @@ std::vector<harness::SolverSpec> expand(const Options& o)
 	return specs;
 }
 
-void progressBar(double fraction)
-{
-	const int width = 40;
-	const int filled = int(fraction * width + 0.5);
-	std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "========================================", width - filled, "", int(fraction * 100 + 0.5));
-	std::fflush(stderr);
-}
 }  // namespace
 
 int main(int argc, char** argv)
 {
 	const Options opt = parse(argc, argv);
-	std::vector<std::unique_ptr<Run>> runs;
+	if (opt.seed)
+	{
+		compare::runSeedStudies(std::cout, opt.csvPath, opt.progress);
+		return 0;
+	}
+	compare::Trials trials;
 	for (const harness::SolverSpec& spec : expand(opt))
 	{
-		std::unique_ptr<Run> r(new Run);
-		r->spec = spec;
-		r->sim.reset(new harness::Simulation(spec, opt.timeStep));
 		try
 		{
-			r->scene = scenes::createScene(r->sim->world(), opt.scene, opt.params);
+			trials.emplace_back(new harness::Trial(spec, opt.scene, opt.params, opt.timeStep));
 		}
 		catch (const std::exception& e)
 		{
 			fail(e.what());
 		}
-		r->bodies = r->scene->dynamicBodies();
-		r->drift.reset(new harness::DriftTracker(r->bodies));
-		runs.push_back(std::move(r));
 	}
 
 	const int steps = int(opt.duration / opt.timeStep + 0.5);
-	const int lastSecondFrom = steps - int(1.0 / opt.timeStep + 0.5);
-	const bool showProgress = opt.progress && isatty(2);
-	for (int step = 0; step < steps; ++step)
-	{
-		for (std::unique_ptr<Run>& r : runs)
-		{
-			const auto t0 = std::chrono::steady_clock::now();
-			r->sim->step();
-			r->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-			btDispatcher& dispatcher = *r->sim->world().getDispatcher();
-			const double drift = r->drift->maxDrift();
-			const double penetration = harness::maxPenetration(dispatcher);
-			const double ke = harness::kineticEnergy(r->bodies);
-			const double reaction = harness::groundReactionOverWeight(dispatcher, r->scene->ground(), r->bodies, opt.timeStep, r->sim->gravity());
-			r->maxDrift = std::max(r->maxDrift, drift);
-			r->maxPenetration = std::max(r->maxPenetration, penetration);
-			if (r->collapseTime < 0 && drift > kStandingDriftMeters) r->collapseTime = r->sim->time();
-			if (step >= lastSecondFrom)
-			{
-				r->keSum += ke;
-				r->reactionSum += reaction;
-				++r->lastSecondSteps;
-			}
-			if (r->sim->shockSolver()) r->layers = std::max(r->layers, r->sim->shockSolver()->getStatistics().m_numLayers);
-			r->nonFinite = r->nonFinite || harness::anyNonFinite(r->bodies);
-			r->seriesDrift.push_back(drift);
-			r->seriesPenetration.push_back(penetration);
-			r->seriesKE.push_back(ke);
-			r->seriesReaction.push_back(reaction);
-		}
-		if (showProgress && (step % 10 == 0 || step == steps - 1)) progressBar(double(step + 1) / steps);
-	}
-	if (showProgress) std::fprintf(stderr, "\n");
+	compare::runLockstep(trials, steps, opt.progress);
 
-	const scenes::SceneEntry* entry = scenes::findScene(opt.scene);
-	std::printf("scene %s (%zu dynamic bodies), %.1f s at dt %.4f s; drift and collapse threshold %.0f cm\n", entry->name.c_str(),
-				runs.front()->bodies.size(), opt.duration, opt.timeStep, kStandingDriftMeters * 100);
-	std::printf("%-22s %-12s %10s %10s %10s %12s %9s %9s %10s %7s\n", "solver", "standing", "maxdrift", "rmsdrift", "maxpen", "KE(last 1s)", "ground/W", "ms/step", "ratio", "layers");
-	const double baseMs = runs.front()->seconds * 1e3 / steps;
-	for (const std::unique_ptr<Run>& r : runs)
-	{
-		char standing[32];
-		if (r->nonFinite) std::snprintf(standing, sizeof standing, "NaN");
-		else if (r->collapseTime < 0) std::snprintf(standing, sizeof standing, "yes");
-		else std::snprintf(standing, sizeof standing, "moved@%.2fs", r->collapseTime);
-		const double ms = r->seconds * 1e3 / steps;
-		std::printf("%-22s %-12s %8.2fcm %8.2fcm %8.2fmm %10.3g J %9.3f %9.3f %9.2fx %7d\n", r->spec.label().c_str(), standing, r->maxDrift * 100,
-					r->drift->rmsDrift() * 100, r->maxPenetration * 1e3, r->keSum / std::max(1, r->lastSecondSteps), r->reactionSum / std::max(1, r->lastSecondSteps), ms,
-					ms / baseMs, r->layers);
-	}
-	std::printf("ratio = ms/step relative to the first row, measured side by side in this run\n");
-
+	std::printf("scene %s (%zu dynamic bodies), %.1f s at dt %.4f s; drift and collapse threshold %.0f cm\n", opt.scene.c_str(),
+				trials.front()->bodies().size(), opt.duration, opt.timeStep, harness::kStandingDriftMeters * 100);
+	std::fflush(stdout);
+	compare::printTable(std::cout, trials);
+	std::cout << "ratio = ms/step relative to the first row, measured side by side in this run\n";
 	if (!opt.csvPath.empty())
 	{
 		std::ofstream csv(opt.csvPath);
-		csv << "scene,solver,iterations,f,substeps,standing,collapse_s,max_drift_m,rms_drift_m,max_penetration_m,ke_last_second_j,ground_over_weight,ms_per_step,layers\n";
-		for (const std::unique_ptr<Run>& r : runs)
-			csv << opt.scene << "," << r->spec.label().substr(0, r->spec.label().find(' ')) << "," << r->spec.iterations << "," << r->spec.weighting << "," << r->spec.substeps << ","
-				<< (r->collapseTime < 0 && !r->nonFinite) << "," << r->collapseTime << "," << r->maxDrift << "," << r->drift->rmsDrift() << "," << r->maxPenetration << ","
-				<< r->keSum / std::max(1, r->lastSecondSteps) << "," << r->reactionSum / std::max(1, r->lastSecondSteps) << "," << r->seconds * 1e3 / steps << "," << r->layers << "\n";
+		compare::writeCsv(csv, opt.scene, trials);
 	}
 	if (!opt.jsonPath.empty())
 	{
-		std::ofstream js(opt.jsonPath);
-		js << "{\"scene\":\"" << opt.scene << "\",\"dt\":" << opt.timeStep << ",\"duration\":" << opt.duration << ",\"runs\":[";
-		for (size_t i = 0; i < runs.size(); ++i)
-		{
-			const Run& r = *runs[i];
-			auto series = [&](const char* name, const std::vector<double>& v) {
-				js << ",\"" << name << "\":[";
-				for (size_t k = 0; k < v.size(); ++k) js << (k ? "," : "") << v[k];
-				js << "]";
-			};
-			js << (i ? "," : "") << "{\"solver\":\"" << r.spec.label() << "\",\"iterations\":" << r.spec.iterations << ",\"f\":" << r.spec.weighting
-			   << ",\"substeps\":" << r.spec.substeps << ",\"standing\":" << (r.collapseTime < 0 && !r.nonFinite ? "true" : "false") << ",\"collapse_s\":" << r.collapseTime
-			   << ",\"max_drift_m\":" << r.maxDrift << ",\"rms_drift_m\":" << r.drift->rmsDrift() << ",\"max_penetration_m\":" << r.maxPenetration
-			   << ",\"ms_per_step\":" << r.seconds * 1e3 / steps << ",\"layers\":" << r.layers;
-			series("drift_m", r.seriesDrift);
-			series("penetration_m", r.seriesPenetration);
-			series("kinetic_energy_j", r.seriesKE);
-			series("ground_over_weight", r.seriesReaction);
-			js << "}";
-		}
-		js << "]}\n";
+		std::ofstream json(opt.jsonPath);
+		compare::writeJson(json, opt.scene, opt.timeStep, opt.duration, trials);
 	}
 	return 0;
 }
