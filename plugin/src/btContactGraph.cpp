@@ -23,7 +23,7 @@ void btContactGraph::reset(int numBodies)
 	m_adjacency.resize(0);
 }
 
-int btContactGraph::addEdge(int bodyA, int bodyB, int source)
+int btContactGraph::addEdge(int bodyA, int bodyB, int source, int support)
 {
 	btAssert(bodyA >= BT_CONTACT_GRAPH_ROOT && bodyA < m_numBodies);
 	btAssert(bodyB >= BT_CONTACT_GRAPH_ROOT && bodyB < m_numBodies);
@@ -35,6 +35,7 @@ int btContactGraph::addEdge(int bodyA, int bodyB, int source)
 	e.m_bodyA = bodyA;
 	e.m_bodyB = bodyB;
 	e.m_source = source;
+	e.m_support = support;
 	return m_edges.size() - 1;
 }
 

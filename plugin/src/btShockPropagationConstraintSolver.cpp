@@ -242,7 +242,7 @@ void btShockPropagationConstraintSolver::buildGraph()
 		}
 		if (touching)
 		{
-			m_graph.addEdge(nodeOf(m->getBody0()), nodeOf(m->getBody1()), i);
+			m_graph.addEdge(nodeOf(m->getBody0()), nodeOf(m->getBody1()), i, supportOf(m));
 		}
 	}
 	for (int i = 0; i < m_constraints.size(); ++i)
@@ -256,6 +256,28 @@ void btShockPropagationConstraintSolver::buildGraph()
 	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(-1);
 	m_graph.buildAdjacency();
 	m_layers.build(m_graph);
+}
+
+int btShockPropagationConstraintSolver::supportOf(const btPersistentManifold* manifold) const
+{
+	// Mean normal (m_normalWorldOnB points from body 1 to body 0) against the up direction of
+	// the dynamic body's gravity.
+	if (!m_settings.m_supportOrdering || manifold->getNumContacts() == 0) return BT_SUPPORT_NONE;
+	const btRigidBody* dynamic = btRigidBody::upcast(manifold->getBody0());
+	if (!dynamic || dynamic->getInvMass() == btScalar(0)) dynamic = btRigidBody::upcast(manifold->getBody1());
+	if (!dynamic) return BT_SUPPORT_NONE;
+	const btVector3 gravity = dynamic->getGravity();
+	const btScalar g = gravity.length();
+	if (!(g > SIMD_EPSILON)) return BT_SUPPORT_NONE;
+	btVector3 normal(0, 0, 0);
+	for (int j = 0; j < manifold->getNumContacts(); ++j) normal += manifold->getContactPoint(j).m_normalWorldOnB;
+	const btScalar length = normal.length();
+	if (!(length > SIMD_EPSILON)) return BT_SUPPORT_NONE;
+	const btScalar up = -normal.dot(gravity) / (length * g);  // cosine of the normal's angle from up
+	const btScalar threshold = btCos(m_settings.m_supportAngle);
+	if (up > threshold) return BT_SUPPORT_A_ON_B;
+	if (up < -threshold) return BT_SUPPORT_B_ON_A;
+	return BT_SUPPORT_NONE;
 }
 
 void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
@@ -527,6 +549,58 @@ void btShockPropagationConstraintSolver::solveGroupCacheFriendlySplitImpulseIter
 			resolvePositionRow(m_tmpSolverBodyPool[c.m_solverBodyIdA], m_tmpSolverBodyPool[c.m_solverBodyIdB], c);
 		}
 	}
+	if (m_pass == BT_PASS_CORRECTION && m_settings.m_correctionStopsApproach)
+	{
+		stopApproachAtPenetratingContacts();
+	}
+}
+
+void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
+{
+	// D11: at every contact that penetrates after the step, take out the velocity into it
+	// (inelastic, normal rows only): rel_vel_i + (J W J^T lambda)_i >= 0 _|_ lambda_i >= 0.
+	// The position correction alone can leave a body touching at zero distance, where Bullet's
+	// box-box test reports no contact: the next dynamics phase would not see the contact and the
+	// velocity into it would grow by g dt every step while the correction keeps teleporting
+	// the body back (measured: dense_random, friction_ramp). Velocities exclude this pass's gravity.
+	const int numRows = m_tmpSolverContactConstraintPool.size();
+	for (int i = 0; i < numRows; ++i)
+	{
+		btSolverConstraint& c = m_tmpSolverContactConstraintPool[i];
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
+		const btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
+		const btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
+		const btScalar relativeVelocity = c.m_contactNormal1.dot(a.m_linearVelocity) + c.m_relpos1CrossNormal.dot(a.m_angularVelocity) +
+										  c.m_contactNormal2.dot(b.m_linearVelocity) + c.m_relpos2CrossNormal.dot(b.m_angularVelocity);
+		const bool penetrating = cp->getDistance() < btScalar(0);
+		const bool missed = relativeVelocity < -m_settings.m_correctionApproachSpeed;
+		c.m_rhs = (penetrating && missed) ? -relativeVelocity * c.m_jacDiagABInv : btScalar(0);
+		c.m_appliedImpulse = btScalar(0);
+	}
+	for (int iteration = 0; iteration < m_settings.m_correctionIterations; ++iteration)
+	{
+		for (int i = 0; i < numRows; ++i)
+		{
+			btSolverConstraint& c = m_tmpSolverContactConstraintPool[i];
+			btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
+			btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
+			btScalar delta = c.m_rhs;
+			delta -= (c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity())) * c.m_jacDiagABInv;
+			delta -= (c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity())) * c.m_jacDiagABInv;
+			const btScalar sum = btScalar(c.m_appliedImpulse) + delta;
+			if (sum < btScalar(0))
+			{
+				delta = -btScalar(c.m_appliedImpulse);
+				c.m_appliedImpulse = btScalar(0);
+			}
+			else
+			{
+				c.m_appliedImpulse = sum;
+			}
+			a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, delta);
+			b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, delta);
+		}
+	}
 }
 
 btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info)
@@ -594,12 +668,18 @@ void btShockPropagationConstraintSolver::solveCorrection(const btContactSolverIn
 
 void btShockPropagationConstraintSolver::writeCorrectedTransforms(btScalar timeStep)
 {
-	// Positions only: velocities, contact impulses and forces stay as the dynamics phase left them.
+	// Positions, and the velocity taken out of penetrating contacts (D11); contact impulses and
+	// forces stay as the dynamics phase left them.
 	for (int i = 0; i < m_tmpSolverBodyPool.size(); ++i)
 	{
 		btSolverBody& sb = m_tmpSolverBodyPool[i];
 		btRigidBody* rb = sb.m_originalBody;
 		if (!rb) continue;
+		if (!sb.internalGetDeltaLinearVelocity().isZero() || !sb.internalGetDeltaAngularVelocity().isZero())
+		{
+			rb->setLinearVelocity(rb->getLinearVelocity() + sb.internalGetDeltaLinearVelocity());
+			rb->setAngularVelocity(rb->getAngularVelocity() + sb.internalGetDeltaAngularVelocity());
+		}
 		if (!sb.internalGetPushVelocity().isZero() || !sb.internalGetTurnVelocity().isZero())
 		{
 			btTransform corrected;

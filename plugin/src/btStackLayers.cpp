@@ -42,6 +42,7 @@ void btStackLayers::build(const btContactGraph& graph)
 {
 	findComponents(graph);
 	computeHeights(graph);
+	raiseBySupport(graph);
 	assignLayers(graph);
 }
 
@@ -118,6 +119,55 @@ void btStackLayers::computeHeights(const btContactGraph& graph)
 	}
 }
 
+namespace
+{
+/// The body of `edge` that rests on the other one, or -1 (side contact, joint, root end).
+int upperEnd(const btContactGraphEdge& edge)
+{
+	if (edge.m_bodyA < 0 || edge.m_bodyB < 0) return -1;
+	if (edge.m_support == BT_SUPPORT_A_ON_B) return edge.m_bodyA;
+	if (edge.m_support == BT_SUPPORT_B_ON_A) return edge.m_bodyB;
+	return -1;
+}
+}  // namespace
+
+void btStackLayers::raiseBySupport(const btContactGraph& graph)
+{
+	// Longest path over the support edges (lower -> upper), Kahn's topological order, starting
+	// from the BFS heights. Bodies without a root keep BT_STACK_HEIGHT_UNREACHED.
+	const int n = graph.getNumBodies();
+	m_numSupports.resize(n);
+	for (int b = 0; b < n; ++b) m_numSupports[b] = 0;
+	bool any = false;
+	for (int e = 0; e < graph.getNumEdges(); ++e)
+	{
+		const int upper = upperEnd(graph.getEdge(e));
+		if (upper >= 0 && m_height[upper] != BT_STACK_HEIGHT_UNREACHED)
+		{
+			++m_numSupports[upper];
+			any = true;
+		}
+	}
+	if (!any) return;
+	int head = 0, tail = 0;
+	for (int b = 0; b < n; ++b)
+	{
+		if (m_numSupports[b] == 0 && m_height[b] != BT_STACK_HEIGHT_UNREACHED) m_queue[tail++] = b;
+	}
+	while (head < tail)
+	{
+		const int lower = m_queue[head++];
+		for (int i = 0; i < graph.getNumIncidentEdges(lower); ++i)
+		{
+			const int e = graph.getIncidentEdge(lower, i);
+			const int upper = upperEnd(graph.getEdge(e));
+			if (upper < 0 || upper == lower || m_height[upper] == BT_STACK_HEIGHT_UNREACHED) continue;
+			m_height[upper] = btMax(m_height[upper], m_height[lower] + 1);
+			if (--m_numSupports[upper] == 0) m_queue[tail++] = upper;
+		}
+	}
+}
+
 void btStackLayers::assignLayers(const btContactGraph& graph)
 {
 	const int n = graph.getNumBodies();
@@ -145,10 +195,8 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 		int layer;
 		if (ha == BT_STACK_HEIGHT_UNREACHED || hb == BT_STACK_HEIGHT_UNREACHED)
 			layer = 0;  // root-less component: one un-fixated layer
-		else if (ha == hb)
-			layer = ha - 1;  // same height: both free in the layer below
 		else
-			layer = btMin(ha, hb);
+			layer = btMax(ha, hb) - 1;  // the layer in which the upper end is free
 		m_edgeLayer[e] = layer;
 		keys[e] = layer;
 		values[e] = e;
@@ -165,7 +213,7 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 	}
 	bucketByKey(keys, values, m_numLayers, m_layerFreeStart, m_layerFree);
 
-	// Fixated bodies: the lower end (height == layer) of the layer's edges, each listed once.
+	// Fixated bodies: the lower ends (height <= layer) of the layer's edges, each listed once.
 	keys.resize(0);
 	values.resize(0);
 	m_lastFixedLayer.resize(n);
@@ -179,7 +227,7 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 			for (int j = 0; j < 2; ++j)
 			{
 				const int b = ends[j];
-				if (b >= 0 && m_height[b] == k && m_lastFixedLayer[b] != k)
+				if (b >= 0 && m_height[b] <= k && m_height[b] != BT_STACK_HEIGHT_UNREACHED && m_lastFixedLayer[b] != k)
 				{
 					m_lastFixedLayer[b] = k;
 					keys.push_back(k);

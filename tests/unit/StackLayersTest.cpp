@@ -17,10 +17,12 @@ struct Graph
 {
 	btContactGraph graph;
 	btStackLayers layers;
-	Graph(int n, const std::vector<std::pair<int, int>>& edges)
+	/// `supports[i]` is the btContactSupport of edge i (none if the list is shorter).
+	Graph(int n, const std::vector<std::pair<int, int>>& edges, const std::vector<int>& supports = {})
 	{
 		graph.reset(n);
-		for (size_t i = 0; i < edges.size(); ++i) graph.addEdge(edges[i].first, edges[i].second, int(i));
+		for (size_t i = 0; i < edges.size(); ++i)
+			graph.addEdge(edges[i].first, edges[i].second, int(i), i < supports.size() ? supports[i] : int(BT_SUPPORT_NONE));
 		graph.buildAdjacency();
 		layers.build(graph);
 	}
@@ -192,6 +194,67 @@ TEST(StackLayers, JointEdgeIsSolvedInTheLayerOfItsEdge)
 	Graph g(3, {{R, 0}, {0, 1}, {1, 2}});
 	EXPECT_EQ(g.layers.getEdgeLayer(2), 2);
 	EXPECT_EQ(g.fixatedBodies(2), std::set<int>({1}));
+}
+
+// The door of algorithm.md 2.4: left column 0-1, right column 2-3-4-5, lintel 6 on 1 and 5.
+// Every edge is a support edge: the first body rests on the second.
+namespace
+{
+const std::vector<std::pair<int, int>> kDoorEdges{{0, R}, {1, 0}, {2, R}, {3, 2}, {4, 3}, {5, 4}, {6, 1}, {6, 5}};
+const std::vector<int> kDoorSupports(kDoorEdges.size(), BT_SUPPORT_A_ON_B);
+}  // namespace
+
+TEST(StackLayers, BfsAloneClampsTheDoorsRightTopBoxBetweenTwoFixatedBodies)
+{
+	// Without support information: the lintel gets BFS height 3 and is fixated in the layer where
+	// the right column's top box (height 4) is free, below it.
+	Graph g(7, kDoorEdges);
+	EXPECT_EQ(g.layers.getHeight(6), 3);
+	EXPECT_EQ(g.layers.getHeight(5), 4);
+	EXPECT_EQ(g.fixatedBodies(3), std::set<int>({4, 6}));
+}
+
+TEST(StackLayers, SupportOrderingPutsTheDoorLintelAboveBothColumns)
+{
+	Graph g(7, kDoorEdges, kDoorSupports);
+	EXPECT_EQ(g.layers.getHeight(1), 2);
+	EXPECT_EQ(g.layers.getHeight(5), 4);
+	EXPECT_EQ(g.layers.getHeight(6), 5) << "lintel one above the taller column";
+	ASSERT_EQ(g.layers.getNumLayers(), 5);
+	// The lintel is free in layer 4 with both column tops fixated: both supports in one solve.
+	EXPECT_EQ(g.freeBodies(4), std::set<int>({6}));
+	EXPECT_EQ(g.fixatedBodies(4), std::set<int>({1, 5}));
+	EXPECT_EQ(g.layers.getEdgeLayer(6), 4);
+	EXPECT_EQ(g.layers.getEdgeLayer(7), 4);
+	// No layer fixates a body that rests on one of the layer's free bodies.
+	for (int k = 0; k < g.layers.getNumLayers(); ++k)
+		for (int e = 0; e < g.graph.getNumEdges(); ++e)
+			if (g.layers.getEdgeLayer(e) == k && kDoorEdges[e].second >= 0)
+				EXPECT_EQ(g.fixatedBodies(k).count(kDoorEdges[e].first), 0u) << "layer " << k << " edge " << e;
+}
+
+TEST(StackLayers, SideContactsDoNotRaiseHeights)
+{
+	// Two boxes on the ground side by side, a third resting on the first only.
+	Graph g(3, {{0, R}, {1, R}, {0, 1}, {2, 0}}, {BT_SUPPORT_A_ON_B, BT_SUPPORT_A_ON_B, BT_SUPPORT_NONE, BT_SUPPORT_A_ON_B});
+	EXPECT_EQ(g.layers.getHeight(0), 1);
+	EXPECT_EQ(g.layers.getHeight(1), 1);
+	EXPECT_EQ(g.layers.getHeight(2), 2);
+	EXPECT_EQ(g.layers.getEdgeLayer(2), 0) << "side contact: both free in layer 0";
+}
+
+TEST(StackLayers, SupportCycleKeepsFiniteHeightsAndEveryBodyFreeOnce)
+{
+	// 0 on the ground; 1, 2, 3 each "rest on" the next in a cycle (tilted contacts can do this).
+	Graph g(4, {{0, R}, {1, 0}, {1, 2}, {2, 3}, {3, 1}}, {BT_SUPPORT_A_ON_B, BT_SUPPORT_A_ON_B, BT_SUPPORT_A_ON_B, BT_SUPPORT_A_ON_B, BT_SUPPORT_A_ON_B});
+	int freeCount = 0;
+	for (int k = 0; k < g.layers.getNumLayers(); ++k) freeCount += g.layers.getNumFreeBodies(k);
+	EXPECT_EQ(freeCount, 4);
+	for (int b = 0; b < 4; ++b)
+	{
+		EXPECT_GE(g.layers.getHeight(b), 1);
+		EXPECT_LE(g.layers.getHeight(b), 4);
+	}
 }
 
 TEST(StackLayers, RootRootEdgeIsIgnored)

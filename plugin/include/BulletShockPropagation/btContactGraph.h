@@ -39,6 +39,16 @@ struct btContactGraphEdge
 	int m_bodyA;   ///< node index, or BT_CONTACT_GRAPH_ROOT
 	int m_bodyB;   ///< node index, or BT_CONTACT_GRAPH_ROOT
 	int m_source;  ///< caller's handle: index of the manifold or constraint this edge stands for
+	/// Which end rests on the other, from the contact normals and gravity:
+	/// BT_SUPPORT_A_ON_B (A rests on B), BT_SUPPORT_B_ON_A, or BT_SUPPORT_NONE (side contact, joint).
+	int m_support;
+};
+
+enum btContactSupport
+{
+	BT_SUPPORT_NONE = 0,
+	BT_SUPPORT_A_ON_B = 1,
+	BT_SUPPORT_B_ON_A = -1
 };
 
 class btContactGraph
@@ -48,8 +58,9 @@ public:
 	void reset(int numBodies);
 
 	/// Add an edge; at least one end must be a node. An edge between two roots is ignored.
-	/// Returns the edge index, or -1 if ignored.
-	int addEdge(int bodyA, int bodyB, int source);
+	/// `support` says which end rests on the other (btContactSupport). Returns the edge index,
+	/// or -1 if ignored.
+	int addEdge(int bodyA, int bodyB, int source, int support = BT_SUPPORT_NONE);
 
 	/// Build the adjacency lists (call after the last addEdge, before queries below).
 	void buildAdjacency();

@@ -64,6 +64,12 @@ subject to the following restrictions:
 ///  D9 components without a static or kinematic body are solved as one un-fixated layer.
 ///  D10 restitution: Bullet's (restitution curve and m_restitutionVelocityThreshold) in every
 ///     dynamics pass, against the fixated body's velocity.
+///  D11 beyond the paper: the second correction also removes the approach velocity (inelastic,
+///     normal only) at contacts that penetrate after the step and approach faster than
+///     m_correctionApproachSpeed, i.e. contacts the dynamics phase missed; corrections leave
+///     m_correctionSlop of penetration. Both keep a corrected contact visible to the next step.
+///  D12 beyond the paper: layers are ordered by support as well as BFS distance (btStackLayers,
+///     m_supportOrdering), so a body is never fixated under a free body that rests on it.
 ///
 /// Bad input: a body whose transform or velocity is NaN or Inf is left out of every pass (it
 /// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or
@@ -134,6 +140,10 @@ protected:
 private:
 	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 					 btTypedConstraint** constraints, int numConstraints);
+	/// Which body of the manifold rests on the other (btContactSupport), for the layer order.
+	int supportOf(const btPersistentManifold* manifold) const;
+	/// D11: after a correction, no velocity into a contact that penetrates (see the .cpp).
+	void stopApproachAtPenetratingContacts();
 	void buildGraph();
 	void solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);

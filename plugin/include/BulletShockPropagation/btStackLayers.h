@@ -22,19 +22,29 @@ subject to the following restrictions:
 /// Definitions, for one connected component of the graph (components are found here, because
 /// Bullet merges small islands into one solveGroup call):
 ///  - roots (static and kinematic bodies, BT_CONTACT_GRAPH_ROOT) have height 0;
-///  - height h(b) of a node = BFS distance in edges from the nearest root (multi-source BFS);
-///  - layer of an edge (a, b):   h(a) == h(b)  ->  h(a) - 1      (both free in the layer below)
-///                               otherwise     ->  min(h(a), h(b));
-///    an edge to a root is in layer 0;
-///  - layer k solves its edges with the bodies of height k+1 free and the bodies of height k
-///    fixated (infinite mass); k = 0, 1, ..., K-1 bottom-up. A body of height h >= 1 is free in
-///    exactly one layer (h-1), so gravity and the position update reach it once.
+///  - BFS height of a node = distance in edges from the nearest root (multi-source BFS), as in
+///    Erleben 2007;
+///  - support ordering (algorithm.md 2.5, option iii in the spirit of Guendelman 2003): a body
+///    that rests on another (btContactGraphEdge::m_support, from the contact normal against
+///    gravity) must sit higher than it. Heights are raised along the support edges by a longest
+///    path in topological order: h(u) = max(h_BFS(u), max over supports s of h(s) + 1). Without
+///    support edges the heights are the BFS heights. A support cycle (possible only with tilted
+///    contacts) keeps the heights its bodies had reached;
+///  - layer of an edge (a, b) = max(h(a), h(b)) - 1, the layer in which its upper end is free
+///    (equal heights: both free); with BFS heights this is min(h(a), h(b)) or h - 1; an edge to a
+///    root is in layer h - 1;
+///  - layer k solves its edges with the bodies of height k+1 free and the other ends (height
+///    <= k) fixated (infinite mass); k = 0, 1, ..., K-1 bottom-up. A body of height h >= 1 is free
+///    in exactly one layer (h-1), so gravity and the position update reach it once.
+///    Example (the door of algorithm.md 2.4): a lintel on a column of 2 boxes and one of 4 gets
+///    height 5, above both column tops, so it is free only after both columns are solved, and
+///    no body is clamped between two fixated ones.
 ///  - A component without a root (a falling cluster, decision D9) has no heights
 ///    (BT_STACK_HEIGHT_UNREACHED); all its bodies are free and all its edges are in layer 0,
 ///    where nothing of it is fixated: it is solved as one ordinary layer.
 ///
-/// Cost O(nodes + edges). BFS layering has no trouble with contact cycles (a ring of bricks):
-/// bodies of equal height that touch are free together in one layer.
+/// Cost O(nodes + edges). Bodies of equal height that touch (a ring of bricks) are free together
+/// in one layer.
 /// Internal part of btShockPropagationConstraintSolver; public so it can be tested and reused.
 enum
 {
@@ -65,7 +75,7 @@ public:
 	int getNumFreeBodies(int layer) const { return m_layerFreeStart[layer + 1] - m_layerFreeStart[layer]; }
 	int getFreeBody(int layer, int i) const { return m_layerFree[m_layerFreeStart[layer] + i]; }
 
-	/// Bodies held at infinite mass in the layer's solve (height == layer, with an edge in it).
+	/// Bodies held at infinite mass in the layer's solve (height <= layer, with an edge in it).
 	int getNumFixatedBodies(int layer) const { return m_layerFixedStart[layer + 1] - m_layerFixedStart[layer]; }
 	int getFixatedBody(int layer, int i) const { return m_layerFixed[m_layerFixedStart[layer] + i]; }
 
@@ -77,6 +87,7 @@ public:
 private:
 	void findComponents(const btContactGraph& graph);
 	void computeHeights(const btContactGraph& graph);
+	void raiseBySupport(const btContactGraph& graph);
 	void assignLayers(const btContactGraph& graph);
 
 	int m_numComponents = 0;
@@ -86,6 +97,7 @@ private:
 	btAlignedObjectArray<int> m_height;
 	btAlignedObjectArray<int> m_edgeLayer;
 	btAlignedObjectArray<int> m_queue;
+	btAlignedObjectArray<int> m_numSupports;  // per body: support edges below it not yet processed
 
 	btAlignedObjectArray<int> m_layerEdgeStart, m_layerEdges;
 	btAlignedObjectArray<int> m_layerFreeStart, m_layerFree;
