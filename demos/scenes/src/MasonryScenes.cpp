@@ -28,21 +28,23 @@ void polygonAreaCentroid(const std::vector<btVector3>& polygon, btScalar& area, 
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------
-// wall: running-bond brick wall in the x-y plane; even rows have `length` bricks, odd rows one fewer,
-// shifted by half a brick, so 16 rows of 13 and 12 bricks make 200 bricks.
+// wall: running-bond brick wall in the x-y plane; even rows have `length` bricks, odd rows are shifted
+// by half a brick: with half bricks at their ends (default; 16 rows of 12 bricks and of 11 bricks plus
+// two halves make 200 pieces, both wall ends flush) or one brick shorter (halfBricks=0, length=13:
+// 200 bricks whose long rows' end bricks overhang by half a brick).
 
 Params wallParams()
 {
 	return {
 		{"rows", 16, "-", "number of brick rows"},
-		{"length", 13, "-", "bricks in an even row (odd rows have one fewer)"},
+		{"length", 12, "-", "bricks in an even row (odd rows: one fewer, plus two half bricks if halfBricks=1)"},
 		{"brickLength", 0.4, "m", "brick extent along x"},
 		{"brickHeight", 0.2, "m", "brick extent along y"},
 		{"brickDepth", 0.2, "m", "brick extent along z"},
 		{"mass", 1, "kg", "mass of each brick"},
 		{"mu", 0.6, "-", build::kMuDescription},
 		{"gap", build::kSideGap, "m", "horizontal gap between neighbouring bricks"},
-		{"halfBricks", 0, "-", "1: short rows end in half bricks so both wall ends are flush (length=12 gives 200 pieces); 0: the long rows' end bricks overhang half a brick and are held by the rows above"},
+		{"halfBricks", 1, "-", "1: odd rows end in half bricks so both wall ends are flush (length=12: 200 pieces); 0: odd rows are one brick shorter and the long rows' end bricks overhang half a brick, held by the rows above (length=13: 200 bricks)"},
 	};
 }
 

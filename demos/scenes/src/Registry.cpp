@@ -21,7 +21,7 @@ const std::vector<SceneEntry>& registry()
 		{"seed", "sparse_stacking", "Several separate short stacks of cubes in a row: many small independent islands.", createSparseStacking, sparseStackingParams()},
 		{"seed", "dense_random", "Seeded random cubes dropped into a walled pit, settling into a compact pile.", createDenseRandom, denseRandomParams()},
 		{"seed", "pyramid", "Dense structured stacking: a 2-D pyramid of boxes, base * (base + 1) / 2 bodies (base 140: 9,870).", createPyramid, pyramidParams()},
-		{"seed", "wall", "Running-bond brick wall, 200 bricks in 16 rows; stock SI cannot hold it.", createWall, wallParams()},
+		{"seed", "wall", "Running-bond brick wall, 200 pieces in 16 rows with flush ends (half bricks); stock SI cannot hold it.", createWall, wallParams()},
 		{"seed", "round_tower", "Round tower of 20 rings of 16 bricks, alternate rings turned by half a brick.", createRoundTower, roundTowerParams()},
 
 		// hard: known failure modes of iterative solvers

@@ -1,0 +1,224 @@
+// Expectations of the registry's hard cases (issue 3), from statics and kinematics rather than
+// from recorded runs. Each runs under the plugin (default settings, 10 iterations) and, where
+// stock Bullet gets the physics right, under stock SI as well.
+#include "Fixture.h"
+
+#include <BulletShockPropagation/btShockPropagationCommon.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using spec::SceneRun;
+
+namespace
+{
+/// Angle (radians) between a body's local y axis and the world's y axis.
+double tilt(const btRigidBody* body)
+{
+	const btVector3 up = body->getWorldTransform().getBasis().getColumn(1);
+	return std::acos(std::max(-1.0, std::min(1.0, double(up.y()))));
+}
+
+double maxSpeed(const std::vector<btRigidBody*>& bodies)
+{
+	double v = 0;
+	for (const btRigidBody* b : bodies) v = std::max(v, double(b->getLinearVelocity().length()));
+	return v;
+}
+
+class HardCase : public ::testing::TestWithParam<harness::SolverSpec>
+{
+};
+
+std::string solverName(const ::testing::TestParamInfo<harness::SolverSpec>& info)
+{
+	return info.param.kind == harness::SolverKind::StockSI ? "StockSI" : "ShockPropagation";
+}
+}  // namespace
+
+TEST_P(HardCase, SeesawTipsToTheHeavySideFirst)
+{
+	// The first clear tilt (3 degrees) must lower the -x end, under the stack. Later the stack may
+	// slide off the tipped plank and the light box tip it back (stock SI does), which is physics too.
+	SceneRun run("seesaw", GetParam());
+	ASSERT_LT(run.scene->facts.at("heavySide"), 0);
+	const btRigidBody* plank = run.named("plank");
+	double rise = 0;  // y of the plank's +x axis: > 0 when the +x end is higher
+	for (int i = 0; i < 240 && std::fabs(rise) < std::sin(0.05); ++i)
+	{
+		run.sim->step();
+		rise = plank->getWorldTransform().getBasis().getColumn(0).y();
+	}
+	EXPECT_GT(rise, std::sin(0.05)) << "the plank did not tip towards the heavy stack within 4 s";
+}
+
+TEST_P(HardCase, RampBoxesSlideBelowTanAngleAndStickAbove)
+{
+	SceneRun run("friction_ramp", GetParam());
+	const int count = int(run.scene->facts.at("count"));
+	const double tanAngle = run.scene->facts.at("tanAngle");
+	run.run(1.5);
+	for (int k = 0; k < count; ++k)
+	{
+		const btRigidBody* box = run.named("box" + std::to_string(k));
+		const double mu = run.scene->facts.at("mu" + std::to_string(k));
+		const double moved = run.drift->drift(box);
+		if (mu < tanAngle - 0.05)
+			EXPECT_GT(moved, 0.5) << "box with mu " << mu << " < tan(angle) " << tanAngle << " should slide";
+		else if (mu > tanAngle + 0.05)
+			EXPECT_LT(moved, 0.01) << "box with mu " << mu << " > tan(angle) " << tanAngle << " should stick";
+	}
+}
+
+TEST_P(HardCase, OverlapRecoveryEndsSeparatedWithoutFlinging)
+{
+	SceneRun run("overlap_recovery", GetParam());
+	const double size = run.scene->facts.at("size");
+	const double overlap = run.scene->facts.at("overlapDepth");
+	double fastest = 0;
+	for (int i = 0; i < 120; ++i)
+	{
+		run.sim->step();
+		fastest = std::max(fastest, maxSpeed(run.bodies));
+	}
+	EXPECT_LT(harness::maxPenetration(*run.sim->world().getDispatcher()), 0.005) << "m, still overlapping after 2 s";
+	// Separating needs each body to move by at most the overlaps below it; nothing should fly.
+	EXPECT_LT(fastest, 2.0) << "m/s: a body was flung";
+	EXPECT_LT(maxSpeed(run.bodies), 0.05) << "m/s: the pile should be at rest";
+	for (const btRigidBody* b : run.bodies) EXPECT_LT(run.drift->drift(b), 4 * overlap + size) << "a body left the pile";
+}
+
+TEST_P(HardCase, DoorWithUnequalColumnsStandsWithoutJamming)
+{
+	SceneRun run("door", GetParam());
+	double peakEnergy = 0;
+	for (int i = 0; i < 300; ++i)
+	{
+		run.sim->step();
+		peakEnergy = std::max(peakEnergy, harness::kineticEnergy(run.bodies));
+	}
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	// A jammed lintel is violent (BFS-only layering measured 145 J); stock SI's settling, 0.018 J.
+	EXPECT_LT(peakEnergy, 0.05) << "J: the lintel jammed or jumped";
+	EXPECT_LT(harness::maxPenetration(*run.sim->world().getDispatcher()), 0.005);
+}
+
+TEST_P(HardCase, DominoRowTopplesToTheLast)
+{
+	SceneRun run("domino_row", GetParam());
+	run.run(5.0);
+	EXPECT_GT(tilt(run.named("first")), 0.5);
+	EXPECT_GT(tilt(run.named("last")), 0.5) << "rad: the chain reaction stopped before the last domino";
+}
+
+TEST_P(HardCase, HingeBridgeSagsToRestAndItsJointsHold)
+{
+	SceneRun run("hinge_bridge", GetParam());
+	const double deckHeight = run.scene->facts.at("deckHeight");
+	run.run(5.0);
+	EXPECT_LT(run.named("middlePlank")->getCenterOfMassPosition().y(), deckHeight) << "the bridge must sag";
+	EXPECT_GT(run.named("middlePlank")->getCenterOfMassPosition().y(), 0.0) << "the bridge must not reach the ground";
+	for (btTypedConstraint* c : run.scene->constraints())
+	{
+		btHingeConstraint* hinge = dynamic_cast<btHingeConstraint*>(c);
+		ASSERT_NE(hinge, nullptr);
+		const btVector3 a = hinge->getRigidBodyA().getWorldTransform() * hinge->getFrameOffsetA().getOrigin();
+		const btVector3 b = hinge->getRigidBodyB().getWorldTransform() * hinge->getFrameOffsetB().getOrigin();
+		// Bullet's hinges are soft (erp 0.2): at 10 iterations under this load stock SI opens them
+		// by 1.9 to 3.8 cm and the plugin by up to 4.1 cm; a hinge that lets go opens without bound.
+		EXPECT_LT((a - b).length(), 0.05) << "m: a hinge came apart";
+	}
+	EXPECT_LT(maxSpeed(run.bodies), 0.2) << "m/s: the bridge should have settled";
+}
+
+TEST_P(HardCase, LeaningStackWhoseBoxesOverhangHalfTopples)
+{
+	// Every box overhangs the one below by more than half its edge: each one tips on its own.
+	SceneRun run("leaning_tower", GetParam(), {{"n", 4}, {"shift", 0.55}});
+	ASSERT_EQ(run.scene->facts.at("expectFalls"), 1);
+	run.run(3.0);
+	EXPECT_GT(run.drift->drift(run.named("top")), 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, HardCase, ::testing::Values(spec::shock(), spec::stock(10)), solverName);
+
+// Where stock SI fails, the plugin's expectation alone.
+
+TEST(HardCaseShock, LeaningTowerWithCentreOfMassOutsideTheBaseFallsUnderStockSI)
+{
+	// The registry default: boxes shifted 0.3 of an edge, each stable on the one below, the stack as
+	// a whole not. Stock SI topples it. Without weight feeling the plugin does not (every layer sees
+	// only the box above it); issue 7 asserts the plugin on this scene.
+	SceneRun run("leaning_tower", spec::stock(10));
+	ASSERT_EQ(run.scene->facts.at("expectFalls"), 1);
+	run.run(4.0);
+	EXPECT_GT(run.drift->drift(run.named("top")), 0.5);
+}
+
+TEST(HardCaseShock, LargeSlabOnTwoSmallCubesStands)
+{
+	// Mass ratio 100; stock SI at 10 iterations lets the slab sink and slide (24 cm).
+	SceneRun run("large_on_small", spec::shock());
+	run.run(5.0);
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+}
+
+TEST(HardCaseShock, MassRatioTowerOfRatio1000Stands)
+{
+	SceneRun run("mass_ratio_tower", spec::shock(), {{"ratio", 1000}});
+	run.run(5.0);
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+}
+
+TEST(HardCaseShock, BfsLayersWithoutSupportOrderingJamTheDoor)
+{
+	// The failure the support ordering exists for (algorithm.md 2.4): with plain BFS layers the
+	// right column's top box is clamped between the fixated lintel and the fixated box below it.
+	SceneRun run("door", spec::shock());
+	btShockPropagationSettings settings = run.sim->shockSolver()->getSettings();
+	settings.m_supportOrdering = false;
+	run.sim->shockSolver()->setSettings(settings);
+	run.run(2.0);
+	EXPECT_GT(run.worstDrift, 0.05) << "m: expected the BFS-only layering to lose the door";
+}
+
+namespace
+{
+struct PitResult
+{
+	double deepest = 0;      // m, deepest penetration over the run
+	double fastestLate = 0;  // m/s, fastest body in the last 5 s
+};
+
+PitResult dropIntoPit(bool stopApproach)
+{
+	SceneRun run("dense_random", spec::shock(), {{"seed", 2}});
+	btShockPropagationSettings settings = run.sim->shockSolver()->getSettings();
+	settings.m_correctionStopsApproach = stopApproach;
+	run.sim->shockSolver()->setSettings(settings);
+	PitResult r;
+	for (int i = 0; i < 600; ++i)
+	{
+		run.sim->step();
+		r.deepest = std::max(r.deepest, harness::maxPenetration(*run.sim->world().getDispatcher()));
+		if (i >= 300) r.fastestLate = std::max(r.fastestLate, maxSpeed(run.bodies));
+	}
+	return r;
+}
+}  // namespace
+
+TEST(HardCaseShock, CubesDroppedIntoAPitAreStoppedAtTheirContacts)
+{
+	// D11: 100 cubes dropped into a pit. The position correction alone pushes a landed cube out
+	// but leaves its velocity into the contact, so the next step drives it in again: measured
+	// 0.26 to 0.28 m deepest penetration of a 0.5 m cube over three seeds (stock SI: 0.14 to
+	// 0.17 m). With the approach velocity removed the pile stays shallower than stock SI's.
+	const PitResult with = dropIntoPit(true);
+	EXPECT_LT(with.deepest, 0.14) << "m";
+	EXPECT_LT(with.fastestLate, std::sqrt(2 * 9.81 * 2.0)) << "m/s: faster than a fall from 2 m after the pile settled";
+	const PitResult without = dropIntoPit(false);
+	EXPECT_GT(without.deepest, with.deepest) << "D11 should make a difference here";
+}
