@@ -38,7 +38,7 @@ void runLockstep(Trials& trials, int steps, bool progress, long done, long total
 void printTable(std::ostream& out, const Trials& trials)
 {
 	char line[256];
-	std::snprintf(line, sizeof line, "%-22s %-12s %10s %10s %10s %12s %9s %9s %10s %7s\n", "solver", "standing", "maxdrift", "rmsdrift", "maxpen",
+	std::snprintf(line, sizeof line, "%-30s %-12s %10s %10s %10s %12s %9s %9s %10s %7s\n", "solver", "standing", "maxdrift", "rmsdrift", "maxpen",
 				  "KE(last 1s)", "ground/W", "ms/step", "ratio", "layers");
 	out << line;
 	const double baseMs = trials.empty() ? 1 : trials.front()->summary().msPerStep;
@@ -49,7 +49,7 @@ void printTable(std::ostream& out, const Trials& trials)
 		if (s.nonFinite) std::snprintf(standing, sizeof standing, "NaN");
 		else if (s.standing) std::snprintf(standing, sizeof standing, "yes");
 		else std::snprintf(standing, sizeof standing, "moved@%.2fs", s.collapseTime);
-		std::snprintf(line, sizeof line, "%-22s %-12s %8.2fcm %8.2fcm %8.2fmm %10.3g J %9.3f %9.3f %9.2fx %7d\n",
+		std::snprintf(line, sizeof line, "%-30s %-12s %8.2fcm %8.2fcm %8.2fmm %10.3g J %9.3f %9.3f %9.2fx %7d\n",
 					  t->simulation().spec().label().c_str(), standing, s.maxDrift * 100, s.rmsDrift * 100, s.maxPenetration * 1e3,
 					  s.kineticEnergyLastSecond, s.groundOverWeightLastSecond, s.msPerStep, s.msPerStep / baseMs, s.layers);
 		out << line;

@@ -32,6 +32,9 @@ struct Options
 	bool progress = true;
 	int fixationMode = -1;
 	bool globalSecondCorrection = false;
+	std::vector<double> slops{-1};
+	bool supportOrdering = true;
+	bool stopApproach = true;
 	bool seed = false;
 };
 
@@ -88,6 +91,9 @@ void usage()
 				 "  --json FILE           summary and per-step series as JSON\n"
 				 "  --fixation MODE       plugin fixation: linear (default), keep, zero\n"
 				 "  --global-correction   plugin: the paper's un-layered second correction\n"
+				 "  --slop M,N,...        plugin: correction slop values in metres (default 0.0005)\n"
+				 "  --bfs-layers          plugin: plain BFS layers, no support ordering (D12 off)\n"
+				 "  --no-stop-approach    plugin: position-only second correction (D11 off)\n"
 				 "  --no-progress         no progress bar\n"
 				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
 }
@@ -132,6 +138,9 @@ Options parse(int argc, char** argv)
 		else if (a == "--no-progress") o.progress = false;
 		else if (a == "--seed") o.seed = true;
 		else if (a == "--global-correction") o.globalSecondCorrection = true;
+		else if (a == "--slop") o.slops = parseList<double>(value(), "slop", toDouble);
+		else if (a == "--bfs-layers") o.supportOrdering = false;
+		else if (a == "--no-stop-approach") o.stopApproach = false;
 		else if (a == "--fixation")
 		{
 			const std::string m = value();
@@ -149,6 +158,8 @@ Options parse(int argc, char** argv)
 		if (n < 1) fail("--iterations must be >= 1");
 	for (double f : o.weightings)
 		if (!(f >= 0 && f <= 1)) fail("--f values must be in [0, 1]");
+	for (double slop : o.slops)
+		if (!(slop >= 0 || slop == -1)) fail("--slop values must be >= 0 metres");
 	for (const std::string& path : {o.csvPath, o.jsonPath})
 	{
 		if (path.empty()) continue;
@@ -171,12 +182,18 @@ std::vector<harness::SolverSpec> expand(const Options& o)
 		{
 			for (size_t k = 0; k < (shock ? o.weightings.size() : 1); ++k)
 			{
-				harness::SolverSpec s = base;
-				s.iterations = n;
-				s.weighting = o.weightings[k];
-				s.fixationMode = o.fixationMode;
-				s.globalSecondCorrection = o.globalSecondCorrection;
-				specs.push_back(s);
+				for (size_t j = 0; j < (shock ? o.slops.size() : 1); ++j)
+				{
+					harness::SolverSpec s = base;
+					s.iterations = n;
+					s.weighting = o.weightings[k];
+					s.fixationMode = o.fixationMode;
+					s.globalSecondCorrection = o.globalSecondCorrection;
+					s.correctionSlop = o.slops[j];
+					s.supportOrdering = o.supportOrdering;
+					s.stopApproach = o.stopApproach;
+					specs.push_back(s);
+				}
 			}
 		}
 	}

@@ -79,6 +79,9 @@ std::string SolverSpec::label() const
 		const char* modes[] = {"keep", "zero", "linear"};
 		if (fixationMode >= 0 && fixationMode < 3) out << " fix=" << modes[fixationMode];
 		if (globalSecondCorrection) out << " globalcorr";
+		if (correctionSlop >= 0) out << " slop=" << correctionSlop;
+		if (!supportOrdering) out << " bfs";
+		if (!stopApproach) out << " nostop";
 	}
 	return out.str();
 }
@@ -100,6 +103,9 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 		settings.m_correctionIterations = spec.iterations;
 		if (spec.fixationMode >= 0) settings.m_fixationMode = btShockPropagationFixationMode(spec.fixationMode);
 		settings.m_layeredSecondCorrection = !spec.globalSecondCorrection;
+		if (spec.correctionSlop >= 0) settings.m_correctionSlop = btScalar(spec.correctionSlop);
+		settings.m_supportOrdering = spec.supportOrdering;
+		settings.m_correctionStopsApproach = spec.stopApproach;
 		m_shockSolver = new btShockPropagationConstraintSolver(settings);
 		m_solver.reset(m_shockSolver);
 	}

@@ -31,6 +31,9 @@ struct SolverSpec
 	int substeps = 1;     ///< sub-steps per frame (stepSimulation with dt / substeps)
 	int fixationMode = -1;          ///< plugin only: btShockPropagationFixationMode, -1 = default
 	bool globalSecondCorrection = false;  ///< plugin only: the paper's un-layered second correction
+	double correctionSlop = -1;      ///< plugin only: m_correctionSlop in metres, -1 = default
+	bool supportOrdering = true;     ///< plugin only: m_supportOrdering (D12)
+	bool stopApproach = true;        ///< plugin only: m_correctionStopsApproach (D11)
 	std::string label() const;
 };
 
