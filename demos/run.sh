@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # README's first command: installs what is missing, builds, and runs the main demo: the
-# 200-brick wall for 10 s under stock Bullet (10 and 100 iterations) and under shock
+# 200-piece running-bond wall for 10 s under stock Bullet (10 and 100 iterations) and under shock
 # propagation (10 iterations), side by side, printing the comparison table.
 # Extra arguments go to bsp_demo (try --help, --list).
 set -euo pipefail

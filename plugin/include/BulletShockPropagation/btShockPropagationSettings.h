@@ -43,8 +43,8 @@ struct btShockPropagationSettings
 	/// Weighting value f in [0, 1] (unitless): the fraction of the time step integrated by the
 	/// global pass with every body free, dynamics(f dt); the layered pass integrates (1 - f) dt.
 	/// Larger f passes more weight down the stack ("weight feeling"); the corrections keep the
-	/// unconverged global solve from sagging. Measured (README): 0.5 holds the 200-brick wall, whose
-	/// overhanging end bricks need the weight of the rows above; 0.1 and 0.25 lose it (D2).
+	/// unconverged global solve from sagging. Measured (README): 0.5 holds the 200-brick wall with
+	/// overhanging end bricks (they need the weight of the rows above); 0.1 and 0.25 lose it (D2).
 	/// f = 0 skips the global pass (OpenTissue would run an impulse-only pass there).
 	btScalar m_weighting = btScalar(0.5);
 
