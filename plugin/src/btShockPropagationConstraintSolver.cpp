@@ -385,7 +385,14 @@ void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersist
 			btManifoldPoint& cp = m->getContactPoint(j);
 			const btScalar total = cp.m_appliedImpulse;
 			const btScalar global = cp.m_prevRHS;
-			if (pass == BT_PASS_GLOBAL)
+			const btScalar f = m_settings.m_weighting;
+			if (pass == BT_PASS_SINGLE)
+			{
+				// One solve of the whole step: warm start T, but with its layer share clamped as
+				// below, T <= G / f, when the last step was layered (a single solve stores G = f T).
+				if (f > btScalar(0)) cp.m_appliedImpulse = btMin(total, global / f);
+			}
+			else if (pass == BT_PASS_GLOBAL)
 			{
 				cp.m_appliedImpulse = global;                           // warm start G
 				cp.m_prevRHS = btMax(btScalar(0), total - global);      // keep L for the layer pass
@@ -394,8 +401,13 @@ void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersist
 			{
 				if (m_globalPassRan)
 				{
-					cp.m_appliedImpulse = global;  // L kept above
-					cp.m_prevRHS = total;          // this step's G
+					// L kept above, at most what this step's G allows a resting load to carry in
+					// the layer pass: L <= G (1 - f) / f (equality in a converged resting stack). An L
+					// cached while the other body was the fixated one (a heavy body on a light one)
+					// would otherwise hit the light body when the roles swap and fling it (measured:
+					// hostile worlds with 1e-3 to 1e6 kg bodies, tests/robustness).
+					cp.m_appliedImpulse = btMin(global, total * (btScalar(1) - f) / f);
+					cp.m_prevRHS = total;  // this step's G
 				}
 				else
 				{
@@ -627,7 +639,7 @@ btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCol
 			cp->m_appliedImpulseLateral2 = lateral2;
 			if (m_pass == BT_PASS_SINGLE)
 			{
-				cp->m_prevRHS = btScalar(0);
+				cp->m_prevRHS = m_settings.m_weighting * normal;  // the share a global pass would carry
 			}
 		}
 	}

@@ -56,8 +56,21 @@ btShockPropagationDynamicsWorld::~btShockPropagationDynamicsWorld()
 void btShockPropagationDynamicsWorld::setConstraintSolver(btConstraintSolver* solver)
 {
 	btShockPropagationConstraintSolver* shock = requireShockSolver(solver);
+	if (solver == m_constraintSolver)
+	{
+		return;  // Bullet would free a solver the world owns and keep using it
+	}
+	// Bullet releases an owned solver's memory without running its destructor, which leaks the
+	// solver's buffers (LeakSanitizer, tests/robustness/LifecycleTest.cpp): destroy it here.
+	btConstraintSolver* owned = m_ownsConstraintSolver ? m_constraintSolver : 0;
+	m_ownsConstraintSolver = false;
 	btDiscreteDynamicsWorld::setConstraintSolver(solver);
 	m_shockSolver = shock;
+	if (owned)
+	{
+		owned->~btConstraintSolver();
+		btAlignedFree(owned);
+	}
 }
 
 void btShockPropagationDynamicsWorld::internalSingleStepSimulation(btScalar timeStep)

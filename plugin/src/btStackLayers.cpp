@@ -22,16 +22,15 @@ subject to the following restrictions:
 namespace
 {
 // Counting sort of (key, value) pairs into CSR arrays: start[k]..start[k+1] holds the values
-// with key k, in input order.
+// with key k, in input order. cursor is scratch (kept by the caller so steps do not allocate).
 void bucketByKey(const btAlignedObjectArray<int>& keys, const btAlignedObjectArray<int>& values, int numKeys,
-				 btAlignedObjectArray<int>& start, btAlignedObjectArray<int>& out)
+				 btAlignedObjectArray<int>& start, btAlignedObjectArray<int>& out, btAlignedObjectArray<int>& cursor)
 {
 	start.resize(numKeys + 1);
 	for (int k = 0; k <= numKeys; ++k) start[k] = 0;
 	for (int i = 0; i < keys.size(); ++i) ++start[keys[i] + 1];
 	for (int k = 0; k < numKeys; ++k) start[k + 1] += start[k];
 	out.resize(keys.size());
-	btAlignedObjectArray<int> cursor;
 	cursor.resize(numKeys);
 	for (int k = 0; k < numKeys; ++k) cursor[k] = start[k];
 	for (int i = 0; i < keys.size(); ++i) out[cursor[keys[i]]++] = values[i];
@@ -181,7 +180,8 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 		m_numLayers = btMax(m_numLayers, layer + 1);
 	}
 
-	btAlignedObjectArray<int> keys, values;
+	btAlignedObjectArray<int>& keys = m_keys;
+	btAlignedObjectArray<int>& values = m_values;
 
 	// Edge layers.
 	m_edgeLayer.resize(numEdges);
@@ -201,7 +201,7 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 		keys[e] = layer;
 		values[e] = e;
 	}
-	bucketByKey(keys, values, m_numLayers, m_layerEdgeStart, m_layerEdges);
+	bucketByKey(keys, values, m_numLayers, m_layerEdgeStart, m_layerEdges, m_cursor);
 
 	// Free bodies.
 	keys.resize(n);
@@ -211,7 +211,7 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 		keys[b] = m_height[b] == BT_STACK_HEIGHT_UNREACHED ? 0 : m_height[b] - 1;
 		values[b] = b;
 	}
-	bucketByKey(keys, values, m_numLayers, m_layerFreeStart, m_layerFree);
+	bucketByKey(keys, values, m_numLayers, m_layerFreeStart, m_layerFree, m_cursor);
 
 	// Fixated bodies: the lower ends (height <= layer) of the layer's edges, each listed once.
 	keys.resize(0);
@@ -236,7 +236,7 @@ void btStackLayers::assignLayers(const btContactGraph& graph)
 			}
 		}
 	}
-	bucketByKey(keys, values, m_numLayers, m_layerFixedStart, m_layerFixed);
+	bucketByKey(keys, values, m_numLayers, m_layerFixedStart, m_layerFixed, m_cursor);
 }
 
 int btStackLayers::getLargestLayer() const

@@ -46,7 +46,8 @@ public:
 									btCollisionConfiguration* collisionConfiguration);
 	virtual ~btShockPropagationDynamicsWorld();
 
-	/// Throws std::invalid_argument unless solver is a btShockPropagationConstraintSolver.
+	/// Throws std::invalid_argument unless solver is a btShockPropagationConstraintSolver. A solver
+	/// the world created (constructed with nullptr) is destroyed; the new one stays the caller's.
 	virtual void setConstraintSolver(btConstraintSolver* solver) BT_OVERRIDE;
 
 	btShockPropagationConstraintSolver* getShockPropagationSolver() { return m_shockSolver; }

@@ -103,6 +103,7 @@ private:
 	btAlignedObjectArray<int> m_layerFreeStart, m_layerFree;
 	btAlignedObjectArray<int> m_layerFixedStart, m_layerFixed;
 	btAlignedObjectArray<int> m_lastFixedLayer;  // per body: last layer it was listed fixated in
+	btAlignedObjectArray<int> m_keys, m_values, m_cursor;  // scratch of assignLayers, kept so steps do not allocate
 };
 
 #endif  // BT_SHOCK_PROPAGATION_STACK_LAYERS_H

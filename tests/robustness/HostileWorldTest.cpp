@@ -1,0 +1,202 @@
+// Hostile worlds (scenes/HostileScene.h) under the plugin, seed after seed: what must hold
+// whatever an application throws at the world.
+//
+// Per seed, 120 steps at 60 Hz, after every step:
+//  - the world holds exactly the bodies and constraints the generator says it added;
+//  - no body that was never poisoned has a NaN or Inf transform or velocity (bodies jointed to or
+//    touching a poisoned body included: the plugin leaves non-finite bodies, their manifolds
+//    and their joints out of every pass);
+//  - the kinetic energy of those bodies stays within the energy budget below, and no such body
+//    moves faster than the speed cap below.
+//
+// Energy budget (J). Contacts have restitution 0 and the plugin removes penetration by moving
+// positions, not by adding velocity, so kinetic energy can only come from
+//   (a) the bodies' initial kinetic energy E0_i,
+//   (b) gravity: m_i g (highest_i - y_i), where highest_i is the highest the body's centre has
+//       been (placed, teleported, or lifted out of an overlap) and y_i where it is now,
+//   (c) the kinematic bodies: an inelastic push brings a body at most to the pusher's speed v_k;
+//       allowing for rotation and a second push, 1/2 m_i (2 v_k)^2 per body,
+//   (d) joints: a correction that moves a jointed body by up to one body extent e (1.1 m here)
+//       leaves a joint error that Bullet's joint ERP removes at erp e / dt_pass, where dt_pass is
+//       the shortest sub-step a joint row is solved with, min(f, 1 - f) dt (29 m/s at erp 0.2,
+//       f 0.5, 60 Hz): 1/2 m_i v_j^2 per jointed body.
+// A body moving under several of these has |v|^2 <= 2 |v_b|^2 + 2 |v_cd|^2, hence
+//   KE(healthy) <= 2 * sum_i [E0_i + m_i g (highest_i - y_i) + 1/2 m_i (2 v_k)^2 + 1/2 m_i v_j^2].
+// A poisoned body counts with what it had released when it was poisoned (it is frozen after).
+// Speed cap (m/s): no body is accelerated by more than g for the t seconds simulated, pushed faster
+// than 2 v_k, pulled by a joint faster than v_j, or started faster than v0; twice that allows
+// lever effects between bodies:  |v| <= 2 (v0 + g t + 2 v_k + v_j).
+// The energy budget catches a heavy body gaining energy; the speed cap catches a light one (a
+// 1e-3 kg body thrown at 1 km/s is 500 J, invisible next to a 1e6 kg body's budget).
+//
+// Count and finiteness must hold for every seed. The budget or the cap is exceeded today in
+// about 3% of seeds (1,000 seeds, float: 30 in the world mode, 31 solver-only; most by less
+// than 2x, a few run away to hundreds of m/s): mostly a light body hinged to a heavy one that a
+// correction or a layer's fixation moves (the fixated body's rotation is not seen by the layer
+// above, D1), whose joint error Bullet's ERP then removes faster than the cap allows. Known and
+// not fixed here (README, "Behaviour on bad input"); the test fails if more than
+// kMaxSeedsOverBoundPercent of the seeds exceed it, and prints the ones that do.
+//
+// 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000).
+
+#include <BulletShockPropagation/btShockPropagationCommon.h>
+#include <harness/Metrics.h>
+#include <harness/Simulation.h>
+#include <scenes/HostileScene.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr double kTimeStepSeconds = 1.0 / 60.0;
+constexpr double kGravity = 9.81;  // m/s^2, harness::Simulation's default
+constexpr int kStepsPerSeed = 120;
+constexpr int kDefaultSeeds = 100;
+constexpr int kMaxReportedFailures = 20;
+constexpr double kMaxSeedsOverBoundPercent = 5;  // measured about 3 (header comment)
+
+int seedCount()
+{
+	const char* text = std::getenv("BSP_HOSTILE_SEEDS");
+	if (!text) return kDefaultSeeds;
+	const int n = std::atoi(text);
+	return n > 0 ? n : kDefaultSeeds;
+}
+
+bool isFinite(const btRigidBody& body)
+{
+	const btTransform& t = body.getWorldTransform();
+	double sum = double(t.getOrigin().x()) + t.getOrigin().y() + t.getOrigin().z();
+	for (int i = 0; i < 3; ++i) sum += double(t.getBasis()[i].x()) + t.getBasis()[i].y() + t.getBasis()[i].z();
+	const btVector3& v = body.getLinearVelocity();
+	const btVector3& w = body.getAngularVelocity();
+	sum += double(v.x()) + v.y() + v.z() + w.x() + w.y() + w.z();
+	return std::isfinite(sum);
+}
+
+double massOf(const btRigidBody& body) { return body.getInvMass() > 0 ? 1.0 / double(body.getInvMass()) : 0.0; }
+
+/// Largest values seen over all seeds of one run, for the test log.
+struct Extremes
+{
+	double energyOverBudget = 0;
+	double speedOverCap = 0;
+	int poisonedBodies = 0;
+	int bodiesMade = 0;
+};
+
+/// Runs one seed; appends what went wrong to `broken` (count or finiteness) or to `overBound`
+/// (energy budget or speed cap), at most one line per seed.
+void runSeed(const harness::SolverSpec& solver, std::uint32_t seed, std::vector<std::string>& broken, std::vector<std::string>& overBound,
+			 Extremes& extremes)
+{
+	harness::Simulation sim(solver, kTimeStepSeconds, kGravity);
+	scenes::HostileScene scene(sim.world(), seed);  // destroyed before the world
+	btDiscreteDynamicsWorld& world = sim.world();
+	const double f = sim.shockSolver()->getWeighting();
+	const double jointSpeed = world.getSolverInfo().m_erp * scenes::HostileScene::largestExtent() / (std::min(f, 1 - f) * kTimeStepSeconds);
+	std::map<const btRigidBody*, double> highest;  // m, highest centre height seen while healthy
+	auto report = [&](std::vector<std::string>& list, int step, const std::string& what) {
+		std::ostringstream out;
+		out << "seed " << seed << ", step " << step << ": " << what;
+		list.push_back(out.str());
+	};
+	auto fail = [&](int step, const std::string& what) { report(broken, step, what); };
+	bool overReported = false;
+	auto exceed = [&](int step, const std::string& what) {
+		if (!overReported) report(overBound, step, what);
+		overReported = true;
+	};
+	for (int step = 1; step <= kStepsPerSeed; ++step)
+	{
+		scene.beforeStep(kTimeStepSeconds);
+		sim.step();
+
+		if (world.getNumCollisionObjects() != scene.expectedCollisionObjects())
+			return fail(step, "world holds " + std::to_string(world.getNumCollisionObjects()) + " bodies, generator added " +
+								  std::to_string(scene.expectedCollisionObjects()));
+		if (world.getNumConstraints() != scene.expectedConstraints())
+			return fail(step, "world holds " + std::to_string(world.getNumConstraints()) + " constraints, generator added " +
+								  std::to_string(scene.expectedConstraints()));
+
+		double kinetic = 0, budget = 0;
+		const double pushSpeed = 2 * scene.kinematicSpeed();
+		const double speedCap = 2 * (scene.maxStartSpeed() + kGravity * scene.elapsedTime() + pushSpeed + jointSpeed);
+		for (const scenes::HostileBody& record : scene.bodies())
+		{
+			const btRigidBody& body = *record.body;
+			const double mass = massOf(body);
+			if (record.isStatic || record.kinematic || mass == 0) continue;
+			if (record.poisoned)
+			{
+				const double top = std::max(highest.count(&body) ? highest[&body] : record.highestY, record.highestY);
+				budget += record.startKineticEnergy + mass * kGravity * (top - record.yWhenPoisoned);
+				continue;
+			}
+			if (!isFinite(body))
+				return fail(step, "a body that was never poisoned became non-finite");
+			const double y = body.getWorldTransform().getOrigin().y();
+			double& top = highest.emplace(&body, record.highestY).first->second;
+			top = std::max(std::max(top, y), record.highestY);
+			budget += record.startKineticEnergy + mass * kGravity * (top - y) + 0.5 * mass * pushSpeed * pushSpeed;
+			if (scene.isJointed(&body)) budget += 0.5 * mass * jointSpeed * jointSpeed;
+			kinetic += harness::kineticEnergy({const_cast<btRigidBody*>(&body)});
+			const double speed = body.getLinearVelocity().length();
+			extremes.speedOverCap = std::max(extremes.speedOverCap, speed / speedCap);
+			if (speed > speedCap)
+				exceed(step, "a healthy body moves at " + std::to_string(speed) + " m/s, cap " + std::to_string(speedCap) + " m/s");
+		}
+		budget *= 2;
+		if (budget > 0) extremes.energyOverBudget = std::max(extremes.energyOverBudget, kinetic / budget);
+		if (kinetic > budget)
+			exceed(step, "kinetic energy " + std::to_string(kinetic) + " J exceeds the budget " + std::to_string(budget) + " J");
+	}
+	for (const scenes::HostileBody& record : scene.bodies()) extremes.poisonedBodies += record.poisoned ? 1 : 0;
+	extremes.bodiesMade += int(scene.bodies().size());
+}
+
+void runSeeds(const harness::SolverSpec& solver)
+{
+	const int seeds = seedCount();
+	std::vector<std::string> broken, overBound;
+	Extremes extremes;
+	for (int seed = 0; seed < seeds; ++seed) runSeed(solver, std::uint32_t(seed), broken, overBound, extremes);
+	std::ostringstream log;
+	log << seeds << " seeds x " << kStepsPerSeed << " steps, " << extremes.bodiesMade << " bodies (" << extremes.poisonedBodies
+		<< " poisoned); " << overBound.size() << " seeds over the energy budget or speed cap; largest kinetic energy / budget "
+		<< extremes.energyOverBudget << ", largest speed / cap " << extremes.speedOverCap;
+	std::printf("%s\n", log.str().c_str());
+	for (const std::string& line : overBound) std::printf("  over: %s\n", line.c_str());
+	::testing::Test::RecordProperty("summary", log.str());
+	for (size_t i = 0; i < broken.size() && i < size_t(kMaxReportedFailures); ++i) ADD_FAILURE() << broken[i];
+	EXPECT_EQ(broken.size(), 0u) << broken.size() << " of " << seeds << " seeds lost count or finiteness";
+	EXPECT_LE(100.0 * double(overBound.size()) / seeds, kMaxSeedsOverBoundPercent) << overBound.size() << " of " << seeds << " seeds exceeded the bounds";
+}
+
+harness::SolverSpec plugin(harness::SolverKind kind)
+{
+	harness::SolverSpec spec;
+	spec.kind = kind;
+	spec.iterations = 10;
+	return spec;
+}
+}  // namespace
+
+TEST(HostileWorld, ShockWorldKeepsCountsAndHealthyBodiesFiniteAndBounded)
+{
+	runSeeds(plugin(harness::SolverKind::ShockWorld));
+}
+
+TEST(HostileWorld, SolverOnlyKeepsCountsAndHealthyBodiesFiniteAndBounded)
+{
+	runSeeds(plugin(harness::SolverKind::ShockSolverOnly));
+}
