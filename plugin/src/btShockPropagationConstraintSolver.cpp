@@ -97,6 +97,22 @@ void resolvePositionRow(btSolverBody& bodyA, btSolverBody& bodyB, btSolverConstr
 	bodyB.internalApplyPushImpulse(c.m_contactNormal2 * bodyB.internalGetInvMass(), c.m_angularComponentB, delta);
 }
 
+/// Warm starts are clamped to this many times the lighter body's weight impulse (see prepareWarmStart).
+const btScalar kWarmStartWeights = btScalar(4);
+
+/// Weight (N) of the lighter dynamic body of a manifold; infinity if neither has finite mass.
+btScalar lighterWeight(const btPersistentManifold* manifold)
+{
+	btScalar lightest = SIMD_INFINITY;
+	const btCollisionObject* ends[2] = {manifold->getBody0(), manifold->getBody1()};
+	for (const btCollisionObject* end : ends)
+	{
+		const btRigidBody* rb = btRigidBody::upcast(end);
+		if (rb && rb->getInvMass() > btScalar(0)) lightest = btMin(lightest, rb->getGravity().length() / rb->getInvMass());
+	}
+	return lightest;
+}
+
 double millisecondsSince(btClock& clock)
 {
 	return double(clock.getTimeMicroseconds()) * 1e-3;
@@ -373,24 +389,31 @@ btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass
 	return p;
 }
 
-void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds)
+void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds, btScalar timeStep)
 {
 	// D5, per point between steps: m_appliedImpulse = total T, m_prevRHS = global share G.
 	// Bullet's setup warm-starts from m_appliedImpulse, so put this pass's own share there.
+	const btScalar f = m_settings.m_weighting;
 	for (int i = 0; i < numManifolds; ++i)
 	{
 		btPersistentManifold* m = manifolds[i];
+		// Role swaps: a layer impulse L cached while the other body was the fixated one (a heavy
+		// body resting on a light one) would hit the light body when their layers swap and fling
+		// it (hostile worlds with 1e-3 to 1e6 kg bodies, tests/robustness). So a layer warm start
+		// is at most what this step's global share G carries in a converged resting stack,
+		// L <= G (1 - f) / f, or kWarmStartWeights times the lighter body's weight impulse
+		// m g dt, whichever is larger; a single solve likewise T <= max(G / f, same bound).
+		// Equal masses (every registry scene) stay far below the second bound.
+		const btScalar lightWeightImpulse = kWarmStartWeights * lighterWeight(m) * timeStep;
 		for (int j = 0; j < m->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m->getContactPoint(j);
 			const btScalar total = cp.m_appliedImpulse;
 			const btScalar global = cp.m_prevRHS;
-			const btScalar f = m_settings.m_weighting;
 			if (pass == BT_PASS_SINGLE)
 			{
-				// One solve of the whole step: warm start T, but with its layer share clamped as
-				// below, T <= G / f, when the last step was layered (a single solve stores G = f T).
-				if (f > btScalar(0)) cp.m_appliedImpulse = btMin(total, global / f);
+				// After a layered step; a single solve stores G = f T, so single after single keeps T.
+				if (f > btScalar(0)) cp.m_appliedImpulse = btMin(total, btMax(global / f, lightWeightImpulse));
 			}
 			else if (pass == BT_PASS_GLOBAL)
 			{
@@ -401,12 +424,7 @@ void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersist
 			{
 				if (m_globalPassRan)
 				{
-					// L kept above, at most what this step's G allows a resting load to carry in
-					// the layer pass: L <= G (1 - f) / f (equality in a converged resting stack). An L
-					// cached while the other body was the fixated one (a heavy body on a light one)
-					// would otherwise hit the light body when the roles swap and fling it (measured:
-					// hostile worlds with 1e-3 to 1e6 kg bodies, tests/robustness).
-					cp.m_appliedImpulse = btMin(global, total * (btScalar(1) - f) / f);
+					cp.m_appliedImpulse = btMin(global, btMax(total * (btScalar(1) - f) / f, lightWeightImpulse));  // L, clamped
 					cp.m_prevRHS = total;  // this step's G
 				}
 				else
@@ -427,7 +445,7 @@ void btShockPropagationConstraintSolver::solvePass(btPass pass, btCollisionObjec
 	const btContactSolverInfo passInfo = makePassInfo(pass, info, timeStep);
 	if (pass != BT_PASS_CORRECTION)
 	{
-		prepareWarmStart(pass, manifolds, numManifolds);
+		prepareWarmStart(pass, manifolds, numManifolds, timeStep);
 	}
 	solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
 	if (pass == BT_PASS_LAYER || pass == BT_PASS_CORRECTION)

@@ -151,7 +151,7 @@ private:
 	/// Fill m_layerBodies / m_layerManifolds / m_layerConstraints with layer k (marking its manifolds).
 	void collectLayer(int layer, btAlignedObjectArray<char>* manifoldInLayer);
 	void fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info);
-	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds);
+	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds, btScalar timeStep);
 	btContactSolverInfo makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const;
 
 	btShockPropagationSettings m_settings;
