@@ -35,6 +35,14 @@ inline harness::SolverSpec shockSolverOnly(int iterations = 10, double f = btSho
 	return s;
 }
 
+/// The plugin in either mode (ShockWorld or ShockSolverOnly) with its default settings.
+inline harness::SolverSpec plugin(harness::SolverKind kind)
+{
+	harness::SolverSpec s = shock();
+	s.kind = kind;
+	return s;
+}
+
 inline harness::SolverSpec stock(int iterations = 10)
 {
 	harness::SolverSpec s;

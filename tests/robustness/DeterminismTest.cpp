@@ -3,6 +3,8 @@
 // mode. The two runs get different heap addresses, so nothing may depend on pointer values.
 // What breaks determinism is listed in README ("Tests").
 
+#include "../behavior/Fixture.h"
+
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 #include <harness/Simulation.h>
 #include <scenes/HostileScene.h>
@@ -19,7 +21,7 @@
 
 namespace
 {
-constexpr double kTimeStepSeconds = 1.0 / 60.0;
+using spec::kTimeStepSeconds;
 constexpr int kSteps = 600;
 
 /// FNV-1a over the bytes of every collision object's transform (origin and basis), in the
@@ -42,12 +44,7 @@ std::uint64_t hashTransforms(const btCollisionWorld& world)
 	return hash;
 }
 
-harness::SolverSpec plugin(harness::SolverKind kind)
-{
-	harness::SolverSpec spec;
-	spec.kind = kind;
-	return spec;
-}
+using spec::plugin;
 
 struct Hashes
 {

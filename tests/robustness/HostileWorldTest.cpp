@@ -39,6 +39,8 @@
 //
 // 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000).
 
+#include "../behavior/Fixture.h"
+
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 #include <harness/Metrics.h>
 #include <harness/Simulation.h>
@@ -57,7 +59,7 @@
 
 namespace
 {
-constexpr double kTimeStepSeconds = 1.0 / 60.0;
+using spec::kTimeStepSeconds;
 constexpr double kGravity = 9.81;  // m/s^2, harness::Simulation's default
 constexpr int kStepsPerSeed = 120;
 constexpr int kDefaultSeeds = 100;
@@ -182,13 +184,7 @@ void runSeeds(const harness::SolverSpec& solver)
 	EXPECT_LE(100.0 * double(overBound.size()) / seeds, kMaxSeedsOverBoundPercent) << overBound.size() << " of " << seeds << " seeds exceeded the bounds";
 }
 
-harness::SolverSpec plugin(harness::SolverKind kind)
-{
-	harness::SolverSpec spec;
-	spec.kind = kind;
-	spec.iterations = 10;
-	return spec;
-}
+using spec::plugin;
 }  // namespace
 
 TEST(HostileWorld, ShockWorldKeepsCountsAndHealthyBodiesFiniteAndBounded)

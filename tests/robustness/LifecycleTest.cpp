@@ -3,10 +3,9 @@
 // with a physical outcome: removed supports let boxes fall, kept ones hold, nothing turns NaN.
 // Destruction-order specs are checked for memory errors by the sanitizer build (tests/run.sh).
 
+#include "../behavior/Fixture.h"
+
 #include <BulletShockPropagation/btShockPropagationCommon.h>
-#include <harness/Metrics.h>
-#include <harness/Simulation.h>
-#include <scenes/Registry.h>
 
 #include <gtest/gtest.h>
 
@@ -17,43 +16,10 @@
 
 namespace
 {
-constexpr double kTimeStepSeconds = 1.0 / 60.0;
-constexpr double kMaxDriftMeters = 0.01;
+using spec::kMaxDriftMeters;
+using spec::kTimeStepSeconds;
+using spec::plugin;
 constexpr double kBoxHeightMeters = 0.5;  // the registry's standard box (1 x 0.5 x 1 m)
-
-harness::SolverSpec plugin(harness::SolverKind kind)
-{
-	harness::SolverSpec spec;
-	spec.kind = kind;
-	return spec;
-}
-
-/// A registry scene in a harness::Simulation; the scene is removed before the world goes.
-struct SceneRun
-{
-	std::unique_ptr<harness::Simulation> sim;
-	std::unique_ptr<scenes::SceneContent> scene;
-	std::vector<btRigidBody*> bodies;
-	std::unique_ptr<harness::DriftTracker> drift;
-
-	SceneRun(harness::SolverKind kind, const std::string& name, const std::vector<std::pair<std::string, double>>& params)
-		: sim(new harness::Simulation(plugin(kind), kTimeStepSeconds))
-	{
-		scene = scenes::createScene(sim->world(), name, params);
-		bodies = scene->dynamicBodies();
-		drift.reset(new harness::DriftTracker(bodies));
-	}
-	~SceneRun()
-	{
-		scene.reset();
-		sim.reset();
-	}
-	void seconds(double s)
-	{
-		for (int i = 0; i < int(s / kTimeStepSeconds + 0.5); ++i) sim->step();
-	}
-	btDiscreteDynamicsWorld& world() { return sim->world(); }
-};
 
 /// What the tick callbacks below do, reached through the world's user info.
 struct TickAction
@@ -84,22 +50,22 @@ std::string kindName(const ::testing::TestParamInfo<harness::SolverKind>& info)
 
 void removeMiddleBoxFromTickCallback(harness::SolverKind kind, bool preTick)
 {
-	SceneRun run(kind, "tower", {{"n", 5}});
+	spec::SceneRun run("tower", plugin(kind), {{"n", 5}});
 	TickAction action;
 	action.stepsLeft = 30;  // 0.5 s of standing first
 	action.bodyToRemove = run.bodies[2];
-	run.world().setInternalTickCallback(actOnTick, &action, preTick);
-	run.seconds(2.5);
+	run.sim->world().setInternalTickCallback(actOnTick, &action, preTick);
+	run.run(2.5);
 	ASSERT_TRUE(action.done);
-	EXPECT_EQ(run.world().getNumCollisionObjects(), int(run.scene->bodies().size()) - 1);
+	EXPECT_EQ(run.sim->world().getNumCollisionObjects(), int(run.scene->bodies().size()) - 1);
 	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
 	// The two boxes above the gap fall by about one box height; the two below do not move.
 	EXPECT_GT(run.drift->drift(run.bodies[3]), 0.8 * kBoxHeightMeters);
 	EXPECT_GT(run.drift->drift(run.bodies[4]), 0.8 * kBoxHeightMeters);
 	EXPECT_LT(run.drift->drift(run.bodies[0]), kMaxDriftMeters);
 	EXPECT_LT(run.drift->drift(run.bodies[1]), kMaxDriftMeters);
-	run.world().setInternalTickCallback(nullptr);
-	run.world().addRigidBody(action.bodyToRemove);  // back, so the scene removes it as usual
+	run.sim->world().setInternalTickCallback(nullptr);
+	run.sim->world().addRigidBody(action.bodyToRemove);  // back, so the scene removes it as usual
 }
 }  // namespace
 
@@ -111,7 +77,7 @@ TEST_P(Lifecycle, JointRemovedInTickCallbacksDropsTheBoxItHeld)
 {
 	for (bool preTick : {true, false})
 	{
-		SceneRun run(GetParam(), "single_box", {});
+		spec::SceneRun run("single_box", plugin(GetParam()), {});
 		btRigidBody* ground = run.scene->ground();
 		// A second box hung 3 m up from the static ground by a point-to-point joint 0.5 m above it.
 		btCollisionShape* shape = run.scene->addShape(new btBoxShape(btVector3(btScalar(0.25), btScalar(0.25), btScalar(0.25))));
@@ -121,40 +87,40 @@ TEST_P(Lifecycle, JointRemovedInTickCallbacksDropsTheBoxItHeld)
 		TickAction action;
 		action.stepsLeft = 60;
 		action.constraintToRemove = joint;
-		run.world().setInternalTickCallback(actOnTick, &action, preTick);
-		run.seconds(0.9);
+		run.sim->world().setInternalTickCallback(actOnTick, &action, preTick);
+		run.run(0.9);
 		EXPECT_NEAR(hung->getCenterOfMassPosition().y(), 3.0, 0.05) << "the joint holds until it is removed";
-		run.seconds(1.6);
+		run.run(1.6);
 		ASSERT_TRUE(action.done);
-		EXPECT_EQ(run.world().getNumConstraints(), 0);
+		EXPECT_EQ(run.sim->world().getNumConstraints(), 0);
 		// Fell 3 m onto the ground: rests with its centre at its half height, 0.25 m.
 		EXPECT_NEAR(hung->getCenterOfMassPosition().y(), 0.25, 0.02);
 		EXPECT_FALSE(harness::anyNonFinite({hung}));
-		run.world().setInternalTickCallback(nullptr);
-		run.world().addConstraint(joint);  // back, so the scene removes it as usual
+		run.sim->world().setInternalTickCallback(nullptr);
+		run.sim->world().addConstraint(joint);  // back, so the scene removes it as usual
 	}
 }
 
 TEST_P(Lifecycle, SwitchingSolversEverySecondKeepsTheTowerStanding)
 {
 	// Two plugin solvers with different weightings take turns; warm-start caches carry over.
-	SceneRun run(GetParam(), "tower", {{"n", 10}});
+	spec::SceneRun run("tower", plugin(GetParam()), {{"n", 10}});
 	btShockPropagationConstraintSolver first, second;
 	first.setWeighting(btScalar(0.1));
 	second.setWeighting(btScalar(0.25));
 	for (int second_ = 0; second_ < 10; ++second_)
 	{
-		run.world().setConstraintSolver(second_ % 2 ? &second : &first);
-		run.seconds(1.0);
+		run.sim->world().setConstraintSolver(second_ % 2 ? &second : &first);
+		run.run(1.0);
 	}
 	EXPECT_LT(run.drift->maxDrift(), kMaxDriftMeters);
 	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
-	run.world().setConstraintSolver(run.sim->shockSolver());  // the harness deletes its own solver
+	run.sim->world().setConstraintSolver(run.sim->shockSolver());  // the harness deletes its own solver
 }
 
 TEST_P(Lifecycle, ChangingTheWeightingEveryStepKeepsTheTowerStanding)
 {
-	SceneRun run(GetParam(), "tower", {{"n", 10}});
+	spec::SceneRun run("tower", plugin(GetParam()), {{"n", 10}});
 	const btScalar weightings[] = {btScalar(0.1), btScalar(0), btScalar(0.25), btScalar(0.5)};
 	for (int step = 0; step < 600; ++step)
 	{
@@ -189,12 +155,12 @@ TEST_P(Lifecycle, WorldWithOnlyStaticBodiesLeavesThemExactlyInPlace)
 
 TEST_P(Lifecycle, BodyWithDisableSimulationStaysPutWhileTheTowerBesideItStands)
 {
-	SceneRun run(GetParam(), "tower", {{"n", 5}});
+	spec::SceneRun run("tower", plugin(GetParam()), {{"n", 5}});
 	btCollisionShape* shape = run.scene->addShape(new btBoxShape(btVector3(btScalar(0.25), btScalar(0.25), btScalar(0.25))));
 	const btVector3 where(4, 3, 0);  // in mid-air: would fall 2.75 m if simulated
 	btRigidBody* frozen = run.scene->addBody(shape, 1, btTransform(btQuaternion::getIdentity(), where), 0.6f);
 	frozen->forceActivationState(DISABLE_SIMULATION);
-	run.seconds(2.0);
+	run.run(2.0);
 	EXPECT_EQ(frozen->getWorldTransform().getOrigin(), where);
 	EXPECT_LT(run.drift->maxDrift(), kMaxDriftMeters);
 	EXPECT_FALSE(harness::anyNonFinite(run.bodies));

@@ -9,6 +9,8 @@
 // steps; the stock world with stock SI: 12). That is bounded, not a leak: the 10 s run of the
 // 9,870-box pyramid in that mode grows its resident memory by 0 kB after the warm-up.
 
+#include "../behavior/Fixture.h"
+
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 #include <harness/Simulation.h>
 #include <scenes/Registry.h>
@@ -22,7 +24,7 @@
 
 namespace
 {
-constexpr double kTimeStepSeconds = 1.0 / 60.0;
+using spec::kTimeStepSeconds;
 constexpr int kWarmUpSteps = 120;  // 2 s: the pyramid has settled and every buffer has grown
 constexpr int kCountedSteps = 60;
 
