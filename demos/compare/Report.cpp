@@ -15,12 +15,6 @@ void drawBar(double fraction)
 	std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "========================================", width - filled, "", int(fraction * 100 + 0.5));
 	std::fflush(stderr);
 }
-
-std::string solverName(const harness::SolverSpec& spec)
-{
-	const std::string label = spec.label();
-	return label.substr(0, label.find(' '));
-}
 }  // namespace
 
 void runLockstep(Trials& trials, int steps, bool progress, long done, long total)
@@ -65,7 +59,7 @@ void writeCsv(std::ostream& out, const std::string& scene, const Trials& trials,
 	{
 		const harness::SolverSpec& spec = t->simulation().spec();
 		const harness::TrialSummary s = t->summary();
-		out << scene << "," << solverName(spec) << "," << spec.iterations << "," << spec.weighting << "," << spec.substeps << ","
+		out << scene << "," << spec.name() << "," << spec.iterations << "," << spec.weighting << "," << spec.substeps << ","
 			<< s.standing << "," << s.collapseTime << "," << s.maxDrift << "," << s.rmsDrift << "," << s.maxPenetration << ","
 			<< s.kineticEnergyLastSecond << "," << s.groundOverWeightLastSecond << "," << s.msPerStep << "," << s.layers << "\n";
 	}

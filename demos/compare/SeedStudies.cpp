@@ -50,7 +50,7 @@ Snapshot snapshot(harness::Trial& t, double topStartY)
 	s.time = t.simulation().time();
 	s.drift = t.series().drift.back();
 	s.penetration = t.series().penetration.back();
-	for (const btRigidBody* b : t.bodies()) s.maxSpeed = std::max(s.maxSpeed, double(b->getLinearVelocity().length()));
+	s.maxSpeed = harness::maxSpeed(t.bodies());
 	if (const btRigidBody* top = t.scene().named("top")) s.topDrop = topStartY - top->getCenterOfMassPosition().y();
 	return s;
 }
@@ -151,7 +151,7 @@ void runSeedStudies(std::ostream& out, const std::string& csvPath, bool progress
 		{
 			const harness::TrialSummary s = trials[i]->summary();
 			const harness::SolverSpec& spec = trials[i]->simulation().spec();
-			const std::string name = spec.label().substr(0, spec.label().find(' ')) + "-" + std::to_string(spec.iterations);
+			const std::string name = spec.name() + "-" + std::to_string(spec.iterations);
 			out << line("%-12s %-10s %-9s %8.2fcm %8.2fmm %8.3fm/s %9.3f %7.2fx\n", g.scene.c_str(), name.c_str(), s.standing ? "yes" : "no",
 						snaps[i].back().drift * 100, s.maxPenetration * 1e3, snaps[i].back().maxSpeed, s.msPerStep, s.msPerStep / base);
 		}
@@ -167,7 +167,7 @@ void runSeedStudies(std::ostream& out, const std::string& csvPath, bool progress
 		for (size_t i = 0; i < trials.size(); ++i)
 		{
 			const harness::SolverSpec& spec = trials[i]->simulation().spec();
-			const std::string name = spec.label().substr(0, spec.label().find(' ')) + "-" + std::to_string(spec.iterations);
+			const std::string name = spec.name() + "-" + std::to_string(spec.iterations);
 			const Snapshot& s = snaps[i].back();
 			out << line("%-10s %10.3fmm %10.3fmm %8.4fm/s\n", name.c_str(), s.topDrop * 1e3, s.penetration * 1e3, s.maxSpeed);
 		}
@@ -183,7 +183,7 @@ void runSeedStudies(std::ostream& out, const std::string& csvPath, bool progress
 		for (size_t i = 0; i < trials.size(); ++i)
 		{
 			const harness::SolverSpec& spec = trials[i]->simulation().spec();
-			const std::string name = spec.label().substr(0, spec.label().find(' ')) + "-" + std::to_string(spec.iterations);
+			const std::string name = spec.name() + "-" + std::to_string(spec.iterations);
 			std::string row = line("%-16s %-8s", g.scene.c_str(), name.c_str());
 			for (const Snapshot& s : snaps[i]) row += line(" %8.2f / %5.2f", s.drift * 100, s.maxSpeed);
 			out << row << "\n";

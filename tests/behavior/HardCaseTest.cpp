@@ -22,13 +22,6 @@ double tilt(const btRigidBody* body)
 	return std::acos(std::max(-1.0, std::min(1.0, double(up.y()))));
 }
 
-double maxSpeed(const std::vector<btRigidBody*>& bodies)
-{
-	double v = 0;
-	for (const btRigidBody* b : bodies) v = std::max(v, double(b->getLinearVelocity().length()));
-	return v;
-}
-
 class HardCase : public ::testing::TestWithParam<harness::SolverSpec>
 {
 };
@@ -82,12 +75,12 @@ TEST_P(HardCase, OverlapRecoveryEndsSeparatedWithoutFlinging)
 	for (int i = 0; i < 120; ++i)
 	{
 		run.sim->step();
-		fastest = std::max(fastest, maxSpeed(run.bodies));
+		fastest = std::max(fastest, harness::maxSpeed(run.bodies));
 	}
 	EXPECT_LT(harness::maxPenetration(*run.sim->world().getDispatcher()), 0.005) << "m, still overlapping after 2 s";
 	// Separating needs each body to move by at most the overlaps below it; nothing should fly.
 	EXPECT_LT(fastest, 2.0) << "m/s: a body was flung";
-	EXPECT_LT(maxSpeed(run.bodies), 0.05) << "m/s: the pile should be at rest";
+	EXPECT_LT(harness::maxSpeed(run.bodies), 0.05) << "m/s: the pile should be at rest";
 	for (const btRigidBody* b : run.bodies) EXPECT_LT(run.drift->drift(b), 4 * overlap + size) << "a body left the pile";
 }
 
@@ -131,7 +124,7 @@ TEST_P(HardCase, HingeBridgeSagsToRestAndItsJointsHold)
 		// by 1.9 to 3.8 cm and the plugin by up to 4.1 cm; a hinge that lets go opens without bound.
 		EXPECT_LT((a - b).length(), 0.05) << "m: a hinge came apart";
 	}
-	EXPECT_LT(maxSpeed(run.bodies), 0.2) << "m/s: the bridge should have settled";
+	EXPECT_LT(harness::maxSpeed(run.bodies), 0.2) << "m/s: the bridge should have settled";
 }
 
 TEST_P(HardCase, LeaningStackWhoseBoxesOverhangHalfTopples)
@@ -174,7 +167,7 @@ TEST(HardCaseShock, CardHouseStands)
 	SceneRun run("card_house", spec::shock());
 	run.run(5.0);
 	EXPECT_LT(run.drift->drift(run.named("top")), 0.05) << "m";
-	EXPECT_LT(maxSpeed(run.bodies), 0.01) << "m/s";
+	EXPECT_LT(harness::maxSpeed(run.bodies), 0.01) << "m/s";
 }
 
 TEST(HardCaseShock, MassRatioTowerOfRatio1000Stands)
@@ -215,7 +208,7 @@ PitResult dropIntoPit(bool stopApproach)
 	{
 		run.sim->step();
 		r.deepest = std::max(r.deepest, harness::maxPenetration(*run.sim->world().getDispatcher()));
-		if (i >= 300) r.fastestLate = std::max(r.fastestLate, maxSpeed(run.bodies));
+		if (i >= 300) r.fastestLate = std::max(r.fastestLate, harness::maxSpeed(run.bodies));
 	}
 	return r;
 }

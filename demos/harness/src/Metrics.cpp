@@ -41,6 +41,13 @@ double kineticEnergy(const std::vector<btRigidBody*>& bodies)
 	return energy;
 }
 
+double maxSpeed(const std::vector<btRigidBody*>& bodies)
+{
+	double fastest = 0;
+	for (const btRigidBody* b : bodies) fastest = std::max(fastest, double(b->getLinearVelocity().length()));
+	return fastest;
+}
+
 double groundReactionOverWeight(btDispatcher& dispatcher, const btCollisionObject* ground,
 								const std::vector<btRigidBody*>& bodies, double timeStep, double gravity)
 {

@@ -66,13 +66,19 @@ bool parseSolverKind(const std::string& text, SolverSpec& spec, std::string& err
 	return false;
 }
 
-std::string SolverSpec::label() const
+std::string SolverSpec::name() const
 {
 	std::ostringstream out;
 	for (const KindName& k : kKinds)
 		if (k.kind == kind) out << k.name;
 	if (substeps > 1) out << "-sub" << substeps;
-	out << " it=" << iterations;
+	return out.str();
+}
+
+std::string SolverSpec::label() const
+{
+	std::ostringstream out;
+	out << name() << " it=" << iterations;
 	if (kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly)
 	{
 		out << " f=" << weighting;

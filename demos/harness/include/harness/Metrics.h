@@ -14,6 +14,9 @@ double maxPenetration(btDispatcher& dispatcher);
 /// Sum of 1/2 m v^2 + 1/2 w.I w over dynamic bodies (joules).
 double kineticEnergy(const std::vector<btRigidBody*>& bodies);
 
+/// Largest linear speed over the bodies (m/s).
+double maxSpeed(const std::vector<btRigidBody*>& bodies);
+
 /// Vertical contact force from the ground on the bodies in the last step (newtons), from
 /// btManifoldPoint::m_appliedImpulse / timeStep, divided by the total weight of the dynamic bodies.
 double groundReactionOverWeight(btDispatcher& dispatcher, const btCollisionObject* ground,

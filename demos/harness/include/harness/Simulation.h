@@ -34,7 +34,8 @@ struct SolverSpec
 	double correctionSlop = -1;      ///< plugin only: m_correctionSlop in metres, -1 = default
 	bool supportOrdering = true;     ///< plugin only: m_supportOrdering (D12)
 	bool stopApproach = true;        ///< plugin only: m_correctionStopsApproach (D11)
-	std::string label() const;
+	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp"
+	std::string label() const;  ///< name() with iterations and any non-default plugin option
 };
 
 /// Names: si, si2f, nncg, mlcp, sp, sp-solver; a "-subN" suffix sets sub-steps (si-sub4).
