@@ -594,6 +594,7 @@ void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
 	// velocity into it would grow by g dt every step while the correction keeps teleporting
 	// the body back (measured: dense_random, friction_ramp). Velocities exclude this pass's gravity.
 	const int numRows = m_tmpSolverContactConstraintPool.size();
+	bool anyMissed = false;
 	for (int i = 0; i < numRows; ++i)
 	{
 		btSolverConstraint& c = m_tmpSolverContactConstraintPool[i];
@@ -606,6 +607,11 @@ void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
 		const bool missed = relativeVelocity < -m_settings.m_correctionApproachSpeed;
 		c.m_rhs = (penetrating && missed) ? -relativeVelocity * c.m_jacDiagABInv : btScalar(0);
 		c.m_appliedImpulse = btScalar(0);
+		anyMissed = anyMissed || c.m_rhs > btScalar(0);
+	}
+	if (!anyMissed)
+	{
+		return;  // resting scenes: nothing to project, skip the sweeps
 	}
 	for (int iteration = 0; iteration < m_settings.m_correctionIterations; ++iteration)
 	{
