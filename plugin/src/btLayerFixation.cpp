@@ -30,6 +30,22 @@ btScalar sideInverseMass(const btSolverBody& body, const btVector3& linearAxis, 
 	return rb->getInvMass() * linearAxis.length2() + angularAxis.dot(angularComponent);
 }
 
+/// J u_ext: the part of one side's external impulse (gravity, gyroscopic torque) that Bullet
+/// put into the row's velocity error (friction rows leave out the torque).
+btScalar externalVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind)
+{
+	if (!body.m_originalBody)
+	{
+		return btScalar(0);
+	}
+	btScalar u = linearAxis.dot(body.m_externalForceImpulse);
+	if (kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT)
+	{
+		u += angularAxis.dot(body.m_externalTorqueImpulse);
+	}
+	return u;
+}
+
 /// J u of the motion the row assumed for one side that is now fixated and should not count.
 btScalar removedVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis,
 						 btSolverRowKind kind, btShockPropagationFixationMode mode)
@@ -39,11 +55,7 @@ btScalar removedVelocity(const btSolverBody& body, const btVector3& linearAxis, 
 		return btScalar(0);
 	}
 	// The external impulse (gravity) of this sub-step: a fixated body does not accelerate.
-	btScalar u = linearAxis.dot(body.m_externalForceImpulse);
-	if (kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT)
-	{
-		u += angularAxis.dot(body.m_externalTorqueImpulse);
-	}
+	btScalar u = externalVelocity(body, linearAxis, angularAxis, kind);
 	// Zero-velocity mode: the fixated body is at rest for the layer (OpenTissue's set_fixed).
 	if (mode == BT_FIXATION_ZERO_VELOCITY)
 	{
@@ -110,6 +122,17 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	{
 		row.m_cfm = cfm * jacNew;
 	}
+}
+
+void btRemoveExternalImpulse(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
+							 bool sideA, bool sideB, btScalar jointDamping)
+{
+	// rhs = (b - J_A (u_A + u_A^ext) - J_B (u_B + u_B^ext)) * m_jacDiagABInv: add the external terms back.
+	const btScalar weight = kind == BT_ROW_JOINT ? jointDamping : btScalar(1);
+	btScalar u = btScalar(0);
+	if (sideA) u += externalVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind);
+	if (sideB) u += externalVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind);
+	row.m_rhs += weight * u * row.m_jacDiagABInv;
 }
 
 btRigidBody* btFixateSolverBody(btSolverBody& body, btShockPropagationFixationMode mode)

@@ -339,12 +339,37 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 	const btScalar layerStep = btMax((btScalar(1) - f) * dt, SIMD_EPSILON * dt);
 	m_manifoldInLayer.resize(m_manifolds.size());
 	for (int i = 0; i < m_manifolds.size(); ++i) m_manifoldInLayer[i] = 0;
+	m_weightFeelingActive = m_settings.m_weightFeeling;
+	if (m_weightFeelingActive)
+	{
+		m_withheldLinear.resize(m_bodies.size());
+		m_withheldAngular.resize(m_bodies.size());
+		m_hasWithheld.resize(m_bodies.size());
+		m_receivedLinear.resize(m_bodies.size());
+		for (int i = 0; i < m_bodies.size(); ++i)
+		{
+			m_receivedLinear[i].setZero();
+			m_withheldLinear[i].setZero();
+			m_withheldAngular[i].setZero();
+			m_hasWithheld[i] = 0;
+		}
+	}
 	for (int k = 0; k < numLayers; ++k)
 	{
+		m_currentLayer = k;
 		collectLayer(k, &m_manifoldInLayer);
 		solvePass(BT_PASS_LAYER, m_layerBodies.size() ? &m_layerBodies[0] : 0, m_layerBodies.size(),
 				  m_layerManifolds.size() ? &m_layerManifolds[0] : 0, m_layerManifolds.size(),
 				  m_layerConstraints.size() ? &m_layerConstraints[0] : 0, m_layerConstraints.size(), info, layerStep, debugDrawer);
+	}
+	m_stats.m_timeLayersMs += millisecondsSince(clock);
+
+	if (m_weightFeelingActive)
+	{
+		clock.reset();
+		solveWeightPass(info, layerStep, debugDrawer);
+		m_weightFeelingActive = false;
+		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 
 	// Manifolds in no layer (beyond the graph threshold): their step impulse is the global pass's.
@@ -355,7 +380,11 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 		for (int j = 0; j < m->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m->getContactPoint(j);
-			if (m_globalPassRan)
+			if (m_settings.m_weightFeeling)
+			{
+				cp.m_prevRHS = btScalar(0);  // no layer share U
+			}
+			else if (m_globalPassRan)
 			{
 				cp.m_prevRHS = cp.m_appliedImpulse;
 			}
@@ -365,7 +394,188 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 			}
 		}
 	}
-	m_stats.m_timeLayersMs += millisecondsSince(clock);
+}
+
+void btShockPropagationConstraintSolver::solveWeightPass(const btContactSolverInfo& info, btScalar layerStep, btIDebugDraw* debugDrawer)
+{
+	// D13, top-down: what the layers above withheld reaches layer k's free bodies, then layer k
+	// is re-solved against its (still fixated) lower bodies, withholding its extra impulses from them.
+	for (int k = m_layers.getNumLayers() - 1; k >= 0; --k)
+	{
+		if (!applyWithheldReactions(k))
+		{
+			// Nothing rests on this layer (the top layer): its solve would not change. Its
+			// points keep U = T - G for the next step's layer pass.
+			collectLayer(k, 0);
+			for (int i = 0; i < m_layerManifolds.size(); ++i)
+			{
+				btPersistentManifold* m = m_layerManifolds[i];
+				for (int j = 0; j < m->getNumContacts(); ++j)
+				{
+					btManifoldPoint& cp = m->getContactPoint(j);
+					cp.m_prevRHS = btMax(btScalar(0), cp.m_appliedImpulse - cp.m_prevRHS);
+				}
+			}
+			continue;
+		}
+		m_currentLayer = k;
+		collectLayer(k, 0);
+		solvePass(BT_PASS_WEIGHT, m_layerBodies.size() ? &m_layerBodies[0] : 0, m_layerBodies.size(),
+				  m_layerManifolds.size() ? &m_layerManifolds[0] : 0, m_layerManifolds.size(),
+				  m_layerConstraints.size() ? &m_layerConstraints[0] : 0, m_layerConstraints.size(), info, layerStep, debugDrawer);
+	}
+}
+
+bool btShockPropagationConstraintSolver::applyWithheldReactions(int layer)
+{
+	bool any = false;
+	for (int i = 0; i < m_layers.getNumFreeBodies(layer); ++i)
+	{
+		const int node = m_layers.getFreeBody(layer, i);
+		if (!m_hasWithheld[node]) continue;
+		btRigidBody* body = btRigidBody::upcast(m_bodies[node]);
+		m_receivedLinear[node] = m_withheldLinear[node];
+		body->applyCentralImpulse(m_withheldLinear[node]);
+		body->applyTorqueImpulse(m_withheldAngular[node]);
+		m_withheldLinear[node].setZero();
+		m_withheldAngular[node].setZero();
+		m_hasWithheld[node] = 0;
+		any = true;
+	}
+	return any;
+}
+
+void btShockPropagationConstraintSolver::mapFixatedSolverBodies(int layer)
+{
+	// During a solve Bullet keeps each body's solver body index in its companion id.
+	const int numSolverBodies = m_tmpSolverBodyPool.size();
+	m_nodeOfSolverBody.resize(numSolverBodies);
+	for (int id = 0; id < numSolverBodies; ++id) m_nodeOfSolverBody[id] = -1;
+	for (int i = 0; i < m_layers.getNumFixatedBodies(layer); ++i)
+	{
+		const int node = m_layers.getFixatedBody(layer, i);
+		const int id = m_bodies[node]->getCompanionId();
+		if (id >= 0 && id < numSolverBodies && m_isFixatedSolverBody[id]) m_nodeOfSolverBody[id] = node;
+	}
+}
+
+void btShockPropagationConstraintSolver::prepareWeightPass(int numFreeBodies, const btContactSolverInfo& info)
+{
+	// The free bodies already received this step's gravity (layer pass) and the reactions from
+	// above: take the external impulses out of the rows and bodies, and let the contact rows
+	// continue from the layer pass's impulse L (total minus global share) without applying it again.
+	struct Pool
+	{
+		btConstraintArray* rows;
+		btSolverRowKind kind;
+	} pools[] = {{&m_tmpSolverContactConstraintPool, BT_ROW_CONTACT},
+				 {&m_tmpSolverContactFrictionConstraintPool, BT_ROW_FRICTION},
+				 {&m_tmpSolverContactRollingFrictionConstraintPool, BT_ROW_ROLLING_FRICTION},
+				 {&m_tmpSolverNonContactConstraintPool, BT_ROW_JOINT}};
+	for (const Pool& pool : pools)
+	{
+		for (int i = 0; i < pool.rows->size(); ++i)
+		{
+			btSolverConstraint& row = (*pool.rows)[i];
+			const bool freeA = row.m_solverBodyIdA < numFreeBodies;
+			const bool freeB = row.m_solverBodyIdB < numFreeBodies;
+			btRemoveExternalImpulse(row, pool.kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], freeA, freeB, info.m_damping);
+		}
+	}
+	for (int id = 0; id < numFreeBodies && id < m_tmpSolverBodyPool.size(); ++id)
+	{
+		m_tmpSolverBodyPool[id].m_externalForceImpulse.setZero();
+		m_tmpSolverBodyPool[id].m_externalTorqueImpulse.setZero();
+	}
+	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+	{
+		btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+		row.m_appliedImpulse = btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);
+	}
+}
+
+void btShockPropagationConstraintSolver::warmStartWeightPass(int numFreeBodies)
+{
+	// Each free body b must now also carry the impulse R_b handed down to it. Its lower contacts
+	// (other end fixated or static) already carry U_i, its own share, pushing along d_i; with
+	// V_b = sum U_i d_i, start them at U_i (1 + s_b), s_b = max(0, -R_b . V_b) / |V_b|^2: exact
+	// for a load centred like the body's own weight (a tower), a start PGS corrects otherwise.
+	// Only the free body moves (the lower end is fixated); what is added is withheld from the
+	// lower end like the rest of the pass's impulse (withholdReactions counts from U).
+	m_layerSupport.resize(numFreeBodies);
+	for (int b = 0; b < numFreeBodies; ++b) m_layerSupport[b].setZero();
+	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+	{
+		const btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
+		const bool freeA = row.m_solverBodyIdA < numFreeBodies;
+		const bool freeB = row.m_solverBodyIdB < numFreeBodies;
+		if (freeA == freeB) continue;  // a contact inside the layer
+		const btScalar up = btScalar(row.m_appliedImpulse);
+		if (freeA) m_layerSupport[row.m_solverBodyIdA] += row.m_contactNormal1 * up;
+		else m_layerSupport[row.m_solverBodyIdB] += row.m_contactNormal2 * up;
+	}
+	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+	{
+		btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
+		const bool freeA = row.m_solverBodyIdA < numFreeBodies;
+		const bool freeB = row.m_solverBodyIdB < numFreeBodies;
+		if (freeA == freeB) continue;
+		const int b = freeA ? row.m_solverBodyIdA : row.m_solverBodyIdB;
+		const btVector3& support = m_layerSupport[b];
+		const btScalar support2 = support.length2();
+		if (!(support2 > SIMD_EPSILON * SIMD_EPSILON)) continue;
+		const btVector3& received = m_receivedLinear[m_layers.getFreeBody(m_currentLayer, b)];
+		const btScalar scale = btMax(btScalar(0), -received.dot(support)) / support2;
+		const btScalar extra = scale * btScalar(row.m_appliedImpulse);
+		if (!(extra > btScalar(0)) || !isFiniteScalar(extra)) continue;
+		row.m_appliedImpulse = row.m_appliedImpulse + extra;
+		btSolverBody& body = m_tmpSolverBodyPool[b];
+		if (freeA) body.internalApplyImpulse(row.m_contactNormal1 * body.internalGetInvMass(), row.m_angularComponentA, extra);
+		else body.internalApplyImpulse(row.m_contactNormal2 * body.internalGetInvMass(), row.m_angularComponentB, extra);
+	}
+}
+
+void btShockPropagationConstraintSolver::withholdReactions()
+{
+	// Sum J_F^T lambda over the rows with a fixated end F into F's withheld impulse. The weight
+	// pass's contact rows started at the layer pass's impulse, already withheld: count the change.
+	struct Pool
+	{
+		btConstraintArray* rows;
+		bool continued;
+	} pools[] = {{&m_tmpSolverContactConstraintPool, m_pass == BT_PASS_WEIGHT},
+				 {&m_tmpSolverContactFrictionConstraintPool, false},
+				 {&m_tmpSolverContactRollingFrictionConstraintPool, false},
+				 {&m_tmpSolverNonContactConstraintPool, false}};
+	for (const Pool& pool : pools)
+	{
+		for (int i = 0; i < pool.rows->size(); ++i)
+		{
+			const btSolverConstraint& row = (*pool.rows)[i];
+			btScalar lambda = btScalar(row.m_appliedImpulse);
+			if (pool.continued)
+			{
+				const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+				lambda -= btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);
+			}
+			if (lambda == btScalar(0)) continue;
+			const int nodeA = m_nodeOfSolverBody[row.m_solverBodyIdA];
+			const int nodeB = m_nodeOfSolverBody[row.m_solverBodyIdB];
+			if (nodeA >= 0)
+			{
+				m_withheldLinear[nodeA] += row.m_contactNormal1 * lambda;
+				m_withheldAngular[nodeA] += row.m_relpos1CrossNormal * lambda;
+				m_hasWithheld[nodeA] = 1;
+			}
+			if (nodeB >= 0)
+			{
+				m_withheldLinear[nodeB] += row.m_contactNormal2 * lambda;
+				m_withheldAngular[nodeB] += row.m_relpos2CrossNormal * lambda;
+				m_hasWithheld[nodeB] = 1;
+			}
+		}
+	}
 }
 
 btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const
@@ -376,15 +586,15 @@ btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass
 	p.m_erp2 = btScalar(0);  // D6: no Baumgarte in dynamics; correction() removes penetration
 	// The split-impulse slot of Bullet's iterations runs our correction() and its write-back
 	// moves positions by push * timeStep with full rotation.
-	p.m_splitImpulse = pass != BT_PASS_GLOBAL;
+	p.m_splitImpulse = pass != BT_PASS_GLOBAL && pass != BT_PASS_WEIGHT;
 	p.m_splitImpulseTurnErp = btScalar(1);
 	if (m_settings.m_twoFrictionDirections)
 	{
 		p.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	}
-	if (pass == BT_PASS_CORRECTION)
+	if (pass == BT_PASS_CORRECTION || pass == BT_PASS_WEIGHT)
 	{
-		p.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
+		p.m_solverMode &= ~SOLVER_USE_WARMSTARTING;  // the weight pass continues from the layer pass (prepareWeightPass)
 	}
 	return p;
 }
@@ -410,7 +620,11 @@ void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersist
 			btManifoldPoint& cp = m->getContactPoint(j);
 			const btScalar total = cp.m_appliedImpulse;
 			const btScalar global = cp.m_prevRHS;
-			if (pass == BT_PASS_SINGLE)
+			if (m_settings.m_weightFeeling)
+			{
+				prepareWeightFeelingWarmStart(pass, cp, lightWeightImpulse);
+			}
+			else if (pass == BT_PASS_SINGLE)
 			{
 				// After a layered step; a single solve stores G = f T, so single after single keeps T.
 				if (f > btScalar(0)) cp.m_appliedImpulse = btMin(total, btMax(global / f, lightWeightImpulse));
@@ -437,20 +651,62 @@ void btShockPropagationConstraintSolver::prepareWarmStart(btPass pass, btPersist
 	}
 }
 
+void btShockPropagationConstraintSolver::prepareWeightFeelingWarmStart(btPass pass, btManifoldPoint& cp, btScalar lightWeightImpulse)
+{
+	// D5 with weight feeling (D13), per point between steps: m_appliedImpulse = total T,
+	// m_prevRHS = the layer pass's share U (what the free body needed before the weight pass).
+	// The global pass warm-starts from f T (the share a converged global pass carries at rest,
+	// now that T is the whole weight), the layer pass from U (clamped against role swaps as
+	// without weight feeling); the weight pass continues from U (prepareWeightPass).
+	const btScalar f = m_settings.m_weighting;
+	if (pass == BT_PASS_GLOBAL)
+	{
+		cp.m_appliedImpulse = f * cp.m_appliedImpulse;  // m_prevRHS keeps U for the layer pass
+	}
+	else if (pass == BT_PASS_LAYER)
+	{
+		const btScalar up = cp.m_prevRHS;
+		if (m_globalPassRan)
+		{
+			const btScalar global = cp.m_appliedImpulse;  // this step's G
+			cp.m_appliedImpulse = btMin(up, btMax(global * (btScalar(1) - f) / f, lightWeightImpulse));
+			cp.m_prevRHS = global;
+		}
+		else
+		{
+			cp.m_appliedImpulse = up;
+			cp.m_prevRHS = btScalar(0);
+		}
+	}
+	// BT_PASS_SINGLE: warm start from T, every body free.
+}
+
 void btShockPropagationConstraintSolver::solvePass(btPass pass, btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
 												   int numManifolds, btTypedConstraint** constraints, int numConstraints,
 												   const btContactSolverInfo& info, btScalar timeStep, btIDebugDraw* debugDrawer)
 {
 	m_pass = pass;
 	const btContactSolverInfo passInfo = makePassInfo(pass, info, timeStep);
-	if (pass != BT_PASS_CORRECTION)
+	if (pass != BT_PASS_CORRECTION && pass != BT_PASS_WEIGHT)
 	{
 		prepareWarmStart(pass, manifolds, numManifolds, timeStep);
 	}
 	solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, passInfo, debugDrawer);
-	if (pass == BT_PASS_LAYER || pass == BT_PASS_CORRECTION)
+	if (pass == BT_PASS_WEIGHT)
+	{
+		prepareWeightPass(numBodies, passInfo);
+	}
+	if (pass == BT_PASS_LAYER || pass == BT_PASS_WEIGHT || pass == BT_PASS_CORRECTION)
 	{
 		fixateLowerBodies(numBodies, passInfo);  // no-op when every converted body is free
+	}
+	if (m_weightFeelingActive && (pass == BT_PASS_LAYER || pass == BT_PASS_WEIGHT))
+	{
+		mapFixatedSolverBodies(m_currentLayer);
+	}
+	if (pass == BT_PASS_WEIGHT)
+	{
+		warmStartWeightPass(numBodies);
 	}
 	if (pass == BT_PASS_CORRECTION)
 	{
@@ -556,7 +812,7 @@ void btShockPropagationConstraintSolver::solveGroupCacheFriendlySplitImpulseIter
 	// correction() (algorithm.md 1.3): normal rows only, A x - d >= 0 _|_ x >= 0 with
 	// d_i = fraction * max(0, -distance_i - slop), dq = W J^T x moves positions only. Bullet's
 	// write-back integrates push * timeStep, hence the division by timeStep here.
-	if (m_pass == BT_PASS_GLOBAL || m_settings.m_correctionIterations <= 0)
+	if (m_pass == BT_PASS_GLOBAL || m_pass == BT_PASS_WEIGHT || m_settings.m_correctionIterations <= 0)
 	{
 		return;
 	}
@@ -641,6 +897,10 @@ void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
 
 btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info)
 {
+	if (m_weightFeelingActive && (m_pass == BT_PASS_LAYER || m_pass == BT_PASS_WEIGHT))
+	{
+		withholdReactions();  // D13: before the contact caches below are overwritten
+	}
 	// D5: per-pass caches and the step total (see prepareWarmStart).
 	const bool twoFrictionRows = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
 	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
@@ -650,7 +910,16 @@ btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCol
 		const btScalar normal = row.m_appliedImpulse;
 		const btScalar lateral1 = m_tmpSolverContactFrictionConstraintPool[row.m_frictionIndex].m_appliedImpulse;
 		const btScalar lateral2 = twoFrictionRows ? btScalar(m_tmpSolverContactFrictionConstraintPool[row.m_frictionIndex + 1].m_appliedImpulse) : btScalar(0);
-		if (m_pass == BT_PASS_LAYER)
+		if (m_pass == BT_PASS_WEIGHT)
+		{
+			const btScalar global = cp->m_prevRHS;
+			const btScalar up = btMax(btScalar(0), cp->m_appliedImpulse - global);  // where this pass started
+			cp->m_appliedImpulse = normal + global;  // total = layer (continued) + global share
+			cp->m_prevRHS = up;                      // U, the layer pass's warm start next step
+			cp->m_appliedImpulseLateral1 += lateral1;       // friction rows solved the change only
+			cp->m_appliedImpulseLateral2 += lateral2;
+		}
+		else if (m_pass == BT_PASS_LAYER)
 		{
 			cp->m_appliedImpulse = normal + cp->m_prevRHS;  // total = layer + global share
 			cp->m_appliedImpulseLateral1 = lateral1 + (m_globalPassRan ? cp->m_appliedImpulseLateral1 : btScalar(0));
@@ -663,7 +932,9 @@ btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCol
 			cp->m_appliedImpulseLateral2 = lateral2;
 			if (m_pass == BT_PASS_SINGLE)
 			{
-				cp->m_prevRHS = m_settings.m_weighting * normal;  // the share a global pass would carry
+				// The share a global pass would carry; with weight feeling the layer pass's own
+				// share U, unknown after a single solve.
+				cp->m_prevRHS = m_settings.m_weightFeeling ? btScalar(0) : m_settings.m_weighting * normal;
 			}
 		}
 	}

@@ -15,15 +15,18 @@ struct KindName
 {
 	const char* name;
 	SolverKind kind;
+	bool weightFeeling;
 	const char* description;
 };
 const KindName kKinds[] = {
-	{"si", SolverKind::StockSI, "stock btSequentialImpulseConstraintSolver"},
-	{"si2f", SolverKind::StockSI2Friction, "stock SI with two friction directions"},
-	{"nncg", SolverKind::NNCG, "stock btNNCGConstraintSolver"},
-	{"mlcp", SolverKind::MLCPDantzig, "stock btMLCPSolver with btDantzigSolver (cfm 1e-4)"},
-	{"sp", SolverKind::ShockWorld, "shock propagation, btShockPropagationDynamicsWorld"},
-	{"sp-solver", SolverKind::ShockSolverOnly, "shock propagation solver in a stock world"},
+	{"si", SolverKind::StockSI, false, "stock btSequentialImpulseConstraintSolver"},
+	{"si2f", SolverKind::StockSI2Friction, false, "stock SI with two friction directions"},
+	{"nncg", SolverKind::NNCG, false, "stock btNNCGConstraintSolver"},
+	{"mlcp", SolverKind::MLCPDantzig, false, "stock btMLCPSolver with btDantzigSolver (cfm 1e-4)"},
+	{"sp", SolverKind::ShockWorld, false, "shock propagation, btShockPropagationDynamicsWorld"},
+	{"sp-solver", SolverKind::ShockSolverOnly, false, "shock propagation solver in a stock world"},
+	{"sp-wf", SolverKind::ShockWorld, true, "shock propagation with weight feeling (D13)"},
+	{"sp-solver-wf", SolverKind::ShockSolverOnly, true, "shock propagation solver with weight feeling in a stock world"},
 };
 }  // namespace
 
@@ -58,6 +61,7 @@ bool parseSolverKind(const std::string& text, SolverSpec& spec, std::string& err
 		if (base == k.name)
 		{
 			spec.kind = k.kind;
+			spec.weightFeeling = k.weightFeeling;
 			spec.substeps = substeps;
 			return true;
 		}
@@ -70,7 +74,7 @@ std::string SolverSpec::name() const
 {
 	std::ostringstream out;
 	for (const KindName& k : kKinds)
-		if (k.kind == kind) out << k.name;
+		if (k.kind == kind && k.weightFeeling == weightFeeling) out << k.name;
 	if (substeps > 1) out << "-sub" << substeps;
 	return out.str();
 }
@@ -112,6 +116,7 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 		if (spec.correctionSlop >= 0) settings.m_correctionSlop = btScalar(spec.correctionSlop);
 		settings.m_supportOrdering = spec.supportOrdering;
 		settings.m_correctionStopsApproach = spec.stopApproach;
+		settings.m_weightFeeling = spec.weightFeeling;
 		m_shockSolver = new btShockPropagationConstraintSolver(settings);
 		m_solver.reset(m_shockSolver);
 	}

@@ -59,6 +59,13 @@ struct btLayerFixationParams
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
 					   bool fixA, bool fixB, const btLayerFixationParams& params);
 
+/// Take the external impulse (gravity, gyroscopic torque) of side A and/or B out of a row's
+/// right-hand side, for a re-solve within a step whose external impulses the bodies already
+/// received (the weight-feeling pass). Call before btFixateSolverRow, then zero the bodies'
+/// m_externalForceImpulse and m_externalTorqueImpulse.
+void btRemoveExternalImpulse(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
+							 bool sideA, bool sideB, btScalar jointDamping);
+
 /// Turn a solver body into an infinite-mass obstacle for the rest of this solve (after its rows
 /// were re-derived): zero inverse mass, no external impulse, no accumulated delta velocity, and
 /// detached from its btRigidBody so the write-back skips it. Returns the detached btRigidBody.

@@ -32,7 +32,9 @@ subject to the following restrictions:
 ///   2. no stacks (one layer): one ordinary solve of dt, correction first (skip the extra work);
 ///   3. else dynamics(f dt) on the whole group, every body free        ("global pass");
 ///   4. for k = 0 .. K-1 (bottom-up): fixate bodies of height k (btLayerFixation),
-///      correction(layer k), dynamics((1 - f) dt, layer k), un-fixate  ("layer pass").
+///      correction(layer k), dynamics((1 - f) dt, layer k), un-fixate  ("layer pass");
+///   5. weight feeling only (D13): for k = K-1 .. 0 (top-down): give layer k's free bodies the
+///      reactions withheld from them by the layers above, re-solve layer k  ("weight pass").
 /// The second collision detection and global correction ("anti-rippling") need a world step:
 /// btShockPropagationDynamicsWorld runs them (correction phase of this solver).
 ///
@@ -70,6 +72,17 @@ subject to the following restrictions:
 ///     m_correctionSlop of penetration. Both keep a corrected contact visible to the next step.
 ///  D12 beyond the paper: layers are ordered by support as well as BFS distance (btStackLayers,
 ///     m_supportOrdering), so a body is never fixated under a free body that rests on it.
+///  D13 beyond the paper: weight feeling (m_weightFeeling, setWeightFeeling). A fixated body
+///     does not feel the impulses of the rows that hold the layer above it, so with f = 0 the
+///     ground carries one box of a tower and a load does not tip a plank. The layer pass records,
+///     per fixated body, the impulse it withheld (sum of J_F^T lambda over the layer's rows with
+///     the body as fixated end F). The weight pass then runs top-down: the free bodies of layer k
+///     receive what the layers above withheld from them (applied to their velocities), and layer
+///     k is re-solved with its lower bodies still fixated. The re-solve continues from the layer
+///     pass's impulses (no warm start applied twice), without gravity (already applied) and
+///     without correction; its extra impulses are withheld from the bodies below in turn. Layers
+///     whose free bodies received nothing are skipped (the top layer always). Layer data of the
+///     step are reused. Cost: up to one more layer pass.
 ///
 /// Bad input: a body whose transform or velocity is NaN or Inf is left out of every pass (it
 /// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or
@@ -94,6 +107,10 @@ public:
 	/// The paper's weighting value f in [0, 1]; values outside are clamped, NaN is ignored.
 	void setWeighting(btScalar f);
 	btScalar getWeighting() const { return m_settings.m_weighting; }
+
+	/// Weight feeling (D13): pass the reactions withheld by fixation back down the stack.
+	void setWeightFeeling(bool enabled) { m_settings.m_weightFeeling = enabled; }
+	bool getWeightFeeling() const { return m_settings.m_weightFeeling; }
 
 	/// All settings at once (validated like setWeighting; negative iteration counts become 0).
 	void setSettings(const btShockPropagationSettings& settings);
@@ -121,6 +138,7 @@ protected:
 		BT_PASS_SINGLE,     ///< no stacks: one solve of dt with correction
 		BT_PASS_GLOBAL,     ///< dynamics(f dt), every body free
 		BT_PASS_LAYER,      ///< correction + dynamics((1 - f) dt) of one layer
+		BT_PASS_WEIGHT,     ///< weight feeling: re-solve of one layer with the reactions from above (D13)
 		BT_PASS_CORRECTION  ///< second correction (whole group, or one layer of it)
 	};
 
@@ -151,7 +169,15 @@ private:
 	/// Fill m_layerBodies / m_layerManifolds / m_layerConstraints with layer k (marking its manifolds).
 	void collectLayer(int layer, btAlignedObjectArray<char>* manifoldInLayer);
 	void fixateLowerBodies(int numFreeBodies, const btContactSolverInfo& info);
+	/// D13: weight pass setup (continue from the layer pass's impulses, no gravity) and bookkeeping.
+	void prepareWeightPass(int numFreeBodies, const btContactSolverInfo& info);
+	void mapFixatedSolverBodies(int layer);
+	void withholdReactions();
+	bool applyWithheldReactions(int layer);
+	void solveWeightPass(const btContactSolverInfo& info, btScalar layerStep, btIDebugDraw* debugDrawer);
 	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds, btScalar timeStep);
+	void prepareWeightFeelingWarmStart(btPass pass, btManifoldPoint& cp, btScalar lightWeightImpulse);
+	void warmStartWeightPass(int numFreeBodies);
 	btContactSolverInfo makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const;
 
 	btShockPropagationSettings m_settings;
@@ -173,6 +199,17 @@ private:
 	btAlignedObjectArray<btTypedConstraint*> m_layerConstraints;
 	btAlignedObjectArray<char> m_isFixatedSolverBody;
 	btAlignedObjectArray<btRigidBody*> m_fixatedBodies;
+
+	// Weight feeling (D13): per graph node, the impulse (linear, angular; world frame) that the
+	// layers above withheld from it; per solver body of the current pass, its node if fixated.
+	bool m_weightFeelingActive = false;
+	int m_currentLayer = 0;
+	btAlignedObjectArray<btVector3> m_withheldLinear;
+	btAlignedObjectArray<btVector3> m_withheldAngular;
+	btAlignedObjectArray<char> m_hasWithheld;
+	btAlignedObjectArray<btVector3> m_receivedLinear;   // per node: withheld impulse handed over in this weight pass
+	btAlignedObjectArray<btVector3> m_layerSupport;     // per free solver body: sum of U d over its lower contacts
+	btAlignedObjectArray<int> m_nodeOfSolverBody;
 };
 
 #endif  // BT_SHOCK_PROPAGATION_CONSTRAINT_SOLVER_H

@@ -116,6 +116,12 @@ struct btShockPropagationSettings
 	/// Largest angle (radians) between a contact normal and the up direction for which the
 	/// contact counts as support; steeper contacts are side contacts. 1.0472 = 60 degrees.
 	btScalar m_supportAngle = btScalar(1.0471975511965976);
+
+	/// Weight feeling (D13, beyond the paper; in the spirit of Xiong et al., "Two-Pass Shock
+	/// Propagation", SCA 2025): after the bottom-up layer pass, a top-down pass hands each layer's
+	/// reaction impulses, which fixation withheld from the bodies below, to those bodies and
+	/// re-solves their layer, so the ground carries the whole stack and loads tip what they rest on.
+	bool m_weightFeeling = false;
 };
 
 #endif  // BT_SHOCK_PROPAGATION_SETTINGS_H

@@ -31,6 +31,7 @@ struct btShockPropagationStatistics
 	double m_timeGraphMs = 0;            ///< contact graph and layers
 	double m_timeGlobalDynamicsMs = 0;   ///< dynamics(f dt), every body free
 	double m_timeLayersMs = 0;           ///< per layer: correction and dynamics((1 - f) dt)
+	double m_timeWeightFeelingMs = 0;    ///< top-down pass of the weight-feeling mode (D13)
 	double m_timeCollisionMs = 0;        ///< second collision detection at t + dt (world only)
 	double m_timeCorrectionMs = 0;       ///< second, global correction (world only)
 };

@@ -34,11 +34,12 @@ struct SolverSpec
 	double correctionSlop = -1;      ///< plugin only: m_correctionSlop in metres, -1 = default
 	bool supportOrdering = true;     ///< plugin only: m_supportOrdering (D12)
 	bool stopApproach = true;        ///< plugin only: m_correctionStopsApproach (D11)
+	bool weightFeeling = false;      ///< plugin only: m_weightFeeling (D13); names sp-wf, sp-solver-wf
 	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp"
 	std::string label() const;  ///< name() with iterations and any non-default plugin option
 };
 
-/// Names: si, si2f, nncg, mlcp, sp, sp-solver; a "-subN" suffix sets sub-steps (si-sub4).
+/// Names: si, si2f, nncg, mlcp, sp, sp-solver, sp-wf, sp-solver-wf; a "-subN" suffix sets sub-steps (si-sub4).
 /// Returns false with a message listing the valid names.
 bool parseSolverKind(const std::string& text, SolverSpec& spec, std::string& error);
 std::string solverKindNames();
