@@ -154,6 +154,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 		m_settings.m_correctionFraction = btShockPropagationSettings().m_correctionFraction;
 	if (!(settings.m_correctionSlop >= 0) || !isFiniteScalar(settings.m_correctionSlop))
 		m_settings.m_correctionSlop = btShockPropagationSettings().m_correctionSlop;
+	m_settings.m_weightIterations = btMax(1, settings.m_weightIterations);
 	if (!isFiniteScalar(settings.m_graphContactThreshold))
 		m_settings.m_graphContactThreshold = btShockPropagationSettings().m_graphContactThreshold;
 }
@@ -323,6 +324,10 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 		return;
 	}
 	m_stats.m_numLayeredGroups += 1;
+	if (m_settings.m_weightFeeling)
+	{
+		recordTotalsBefore();  // before the passes overwrite the cached totals
+	}
 
 	const btScalar f = m_settings.m_weighting;
 	clock.reset();
@@ -398,6 +403,7 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 
 void btShockPropagationConstraintSolver::solveWeightPass(const btContactSolverInfo& info, btScalar layerStep, btIDebugDraw* debugDrawer)
 {
+	m_layerTimeStep = layerStep;
 	// D13, top-down: what the layers above withheld reaches layer k's free bodies, then layer k
 	// is re-solved against its (still fixated) lower bodies, withholding its extra impulses from them.
 	for (int k = m_layers.getNumLayers() - 1; k >= 0; --k)
@@ -429,11 +435,14 @@ void btShockPropagationConstraintSolver::solveWeightPass(const btContactSolverIn
 bool btShockPropagationConstraintSolver::applyWithheldReactions(int layer)
 {
 	bool any = false;
+	m_layerVelocityBefore.resize(m_layers.getNumFreeBodies(layer));
 	for (int i = 0; i < m_layers.getNumFreeBodies(layer); ++i)
 	{
 		const int node = m_layers.getFreeBody(layer, i);
-		if (!m_hasWithheld[node]) continue;
 		btRigidBody* body = btRigidBody::upcast(m_bodies[node]);
+		m_layerVelocityBefore[i].m_linear = body->getLinearVelocity();
+		m_layerVelocityBefore[i].m_angular = body->getAngularVelocity();
+		if (!m_hasWithheld[node]) continue;
 		m_receivedLinear[node] = m_withheldLinear[node];
 		body->applyCentralImpulse(m_withheldLinear[node]);
 		body->applyTorqueImpulse(m_withheldAngular[node]);
@@ -443,6 +452,28 @@ bool btShockPropagationConstraintSolver::applyWithheldReactions(int layer)
 		any = true;
 	}
 	return any;
+}
+
+bool btShockPropagationConstraintSolver::weightPassAccepted(int numFreeBodies)
+{
+	// A load handed down pushes a body down and its supports can at most stop it: after the
+	// re-solve no free body's centre of mass may rise faster than before the load arrived
+	// (slack 0.1 g dt). A re-solve that lifts a body did not converge (measured: the round tower
+	// of 20 rings, whose lower rings carry 19 rings at one end of each brick).
+	for (int i = 0; i < numFreeBodies && i < m_tmpSolverBodyPool.size() && i < m_layerVelocityBefore.size(); ++i)
+	{
+		btSolverBody& sb = m_tmpSolverBodyPool[i];
+		const btRigidBody* rb = sb.m_originalBody;
+		if (!rb) continue;
+		const btVector3 gravity = rb->getGravity();
+		const btScalar g = gravity.length();
+		if (!(g > SIMD_EPSILON)) continue;
+		const btVector3 up = -gravity / g;
+		const btScalar slack = btScalar(0.1) * g * m_layerTimeStep;
+		const btVector3 after = sb.m_linearVelocity + sb.internalGetDeltaLinearVelocity();
+		if (!(after.dot(up) <= m_layerVelocityBefore[i].m_linear.dot(up) + slack)) return false;
+	}
+	return true;
 }
 
 void btShockPropagationConstraintSolver::mapFixatedSolverBodies(int layer)
@@ -495,40 +526,83 @@ void btShockPropagationConstraintSolver::prepareWeightPass(int numFreeBodies, co
 	}
 }
 
+void btShockPropagationConstraintSolver::recordTotalsBefore()
+{
+	// The step's previous totals T, per point, for the weight pass's warm start: the layer and
+	// global passes overwrite m_appliedImpulse before it runs. Rows point at their btManifoldPoint,
+	// which lies in its manifold's point cache: manifolds sorted by that address find it.
+	m_manifoldByAddress.resize(m_manifolds.size());
+	m_totalBefore.resize(m_manifolds.size() * MANIFOLD_CACHE_SIZE);
+	for (int i = 0; i < m_manifolds.size(); ++i)
+	{
+		btPersistentManifold* m = m_manifolds[i];
+		m_manifoldByAddress[i].m_points = &m->getContactPoint(0);
+		m_manifoldByAddress[i].m_index = i;
+		for (int j = 0; j < MANIFOLD_CACHE_SIZE; ++j)
+			m_totalBefore[i * MANIFOLD_CACHE_SIZE + j] = j < m->getNumContacts() ? m->getContactPoint(j).m_appliedImpulse : btScalar(0);
+	}
+	struct ByAddress
+	{
+		bool operator()(const btManifoldAddress& a, const btManifoldAddress& b) const { return a.m_points < b.m_points; }
+	};
+	m_manifoldByAddress.quickSort(ByAddress());
+}
+
+btScalar btShockPropagationConstraintSolver::totalBefore(const btManifoldPoint* cp) const
+{
+	int lo = 0, hi = m_manifoldByAddress.size();  // last manifold whose points start at or before cp
+	while (hi - lo > 1)
+	{
+		const int mid = (lo + hi) / 2;
+		if (m_manifoldByAddress[mid].m_points <= cp) lo = mid;
+		else hi = mid;
+	}
+	if (hi == 0) return btScalar(0);
+	const btManifoldAddress& found = m_manifoldByAddress[lo];
+	const std::ptrdiff_t j = cp - found.m_points;
+	if (j < 0 || j >= MANIFOLD_CACHE_SIZE) return btScalar(0);
+	return m_totalBefore[found.m_index * MANIFOLD_CACHE_SIZE + int(j)];
+}
+
 void btShockPropagationConstraintSolver::warmStartWeightPass(int numFreeBodies)
 {
 	// Each free body b must now also carry the impulse R_b handed down to it. Its lower contacts
-	// (other end fixated or static) already carry U_i, its own share, pushing along d_i; with
-	// V_b = sum U_i d_i, start them at U_i (1 + s_b), s_b = max(0, -R_b . V_b) / |V_b|^2: exact
-	// for a load centred like the body's own weight (a tower), a start PGS corrects otherwise.
-	// Only the free body moves (the lower end is fixated); what is added is withheld from the
-	// lower end like the rest of the pass's impulse (withholdReactions counts from U).
+	// (other end fixated or static) start from the layer pass's U_i; the previous step's layer
+	// total T_i - G_i says how a resting body shares such a load among its points, so start them
+	// at U_i + s_b w_i, w_i = max(0, T_i - G_i - U_i), with s_b <= 1 chosen so that the added
+	// impulse E_b = sum w_i d_i does not exceed R_b: s_b = min(1, max(0, -R_b . E_b) / |E_b|^2).
+	// A body that received nothing gets no warm start (a cache from before a role swap cannot
+	// fling it). Only the free body moves; the lower end's share is withheld like the rest of
+	// the pass's impulse (withholdReactions counts from U).
 	m_layerSupport.resize(numFreeBodies);
 	for (int b = 0; b < numFreeBodies; ++b) m_layerSupport[b].setZero();
-	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+	const int numRows = m_tmpSolverContactConstraintPool.size();
+	m_weightWarmStart.resize(numRows);
+	for (int i = 0; i < numRows; ++i)
 	{
 		const btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
+		m_weightWarmStart[i] = btScalar(0);
 		const bool freeA = row.m_solverBodyIdA < numFreeBodies;
 		const bool freeB = row.m_solverBodyIdB < numFreeBodies;
 		if (freeA == freeB) continue;  // a contact inside the layer
-		const btScalar up = btScalar(row.m_appliedImpulse);
-		if (freeA) m_layerSupport[row.m_solverBodyIdA] += row.m_contactNormal1 * up;
-		else m_layerSupport[row.m_solverBodyIdB] += row.m_contactNormal2 * up;
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+		const btScalar extra = totalBefore(cp) - cp->m_prevRHS - btScalar(row.m_appliedImpulse);
+		if (!(extra > btScalar(0)) || !isFiniteScalar(extra)) continue;
+		m_weightWarmStart[i] = extra;
+		if (freeA) m_layerSupport[row.m_solverBodyIdA] += row.m_contactNormal1 * extra;
+		else m_layerSupport[row.m_solverBodyIdB] += row.m_contactNormal2 * extra;
 	}
-	for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+	for (int i = 0; i < numRows; ++i)
 	{
+		if (m_weightWarmStart[i] == btScalar(0)) continue;
 		btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
 		const bool freeA = row.m_solverBodyIdA < numFreeBodies;
-		const bool freeB = row.m_solverBodyIdB < numFreeBodies;
-		if (freeA == freeB) continue;
 		const int b = freeA ? row.m_solverBodyIdA : row.m_solverBodyIdB;
-		const btVector3& support = m_layerSupport[b];
-		const btScalar support2 = support.length2();
-		if (!(support2 > SIMD_EPSILON * SIMD_EPSILON)) continue;
+		const btVector3& added = m_layerSupport[b];
 		const btVector3& received = m_receivedLinear[m_layers.getFreeBody(m_currentLayer, b)];
-		const btScalar scale = btMax(btScalar(0), -received.dot(support)) / support2;
-		const btScalar extra = scale * btScalar(row.m_appliedImpulse);
-		if (!(extra > btScalar(0)) || !isFiniteScalar(extra)) continue;
+		const btScalar scale = btMin(btScalar(1), btMax(btScalar(0), -received.dot(added)) / added.length2());
+		const btScalar extra = scale * m_weightWarmStart[i];
+		if (!(extra > btScalar(0))) continue;
 		row.m_appliedImpulse = row.m_appliedImpulse + extra;
 		btSolverBody& body = m_tmpSolverBodyPool[b];
 		if (freeA) body.internalApplyImpulse(row.m_contactNormal1 * body.internalGetInvMass(), row.m_angularComponentA, extra);
@@ -591,6 +665,12 @@ btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass
 	if (m_settings.m_twoFrictionDirections)
 	{
 		p.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+	}
+	if (pass == BT_PASS_WEIGHT)
+	{
+		// A fixed number of sweeps: stopping at a small per-sweep change (Bullet's residual
+		// threshold) left towers and walls unconverged and falling (measured, README D13).
+		p.m_numIterations = m_settings.m_weightIterations;
 	}
 	if (pass == BT_PASS_CORRECTION || pass == BT_PASS_WEIGHT)
 	{
@@ -895,11 +975,41 @@ void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
 	}
 }
 
+btScalar btShockPropagationConstraintSolver::solveSingleIteration(int iteration, btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+															   int numManifolds, btTypedConstraint** constraints, int numConstraints,
+															   const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	if (m_pass == BT_PASS_WEIGHT) m_stats.m_numWeightSweeps += 1;
+	return btSequentialImpulseConstraintSolver::solveSingleIteration(iteration, bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
+}
+
 btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info)
 {
-	if (m_weightFeelingActive && (m_pass == BT_PASS_LAYER || m_pass == BT_PASS_WEIGHT))
+	const bool rejected = m_pass == BT_PASS_WEIGHT && !weightPassAccepted(numBodies);
+	if (m_weightFeelingActive && (m_pass == BT_PASS_LAYER || m_pass == BT_PASS_WEIGHT) && !rejected)
 	{
 		withholdReactions();  // D13: before the contact caches below are overwritten
+	}
+	if (rejected)
+	{
+		// D13 guard: the layer keeps what the layer pass gave it; nothing more is handed down.
+		m_stats.m_numWeightRejections += 1;
+		for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
+		{
+			btManifoldPoint* cp = static_cast<btManifoldPoint*>(m_tmpSolverContactConstraintPool[i].m_originalContactPoint);
+			cp->m_prevRHS = btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);  // U
+		}
+		btContactSolverInfo bulletInfo = info;
+		bulletInfo.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
+		btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, numBodies, bulletInfo);
+		for (int i = 0; i < numBodies && i < m_layerVelocityBefore.size(); ++i)
+		{
+			btRigidBody* rb = btRigidBody::upcast(bodies[i]);
+			if (!rb) continue;
+			rb->setLinearVelocity(m_layerVelocityBefore[i].m_linear);
+			rb->setAngularVelocity(m_layerVelocityBefore[i].m_angular);
+		}
+		return btScalar(0);
 	}
 	// D5: per-pass caches and the step total (see prepareWarmStart).
 	const bool twoFrictionRows = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;

@@ -147,6 +147,11 @@ protected:
 															   int numManifolds, btTypedConstraint** constraints, int numConstraints,
 															   const btContactSolverInfo& info, btIDebugDraw* debugDrawer) BT_OVERRIDE;
 
+	/// Counts the weight pass's sweeps (statistics), then Bullet's sweep.
+	virtual btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+										  int numManifolds, btTypedConstraint** constraints, int numConstraints,
+										  const btContactSolverInfo& info, btIDebugDraw* debugDrawer) BT_OVERRIDE;
+
 	/// Writes the pass's contact impulses into the per-pass caches, then Bullet's write-back.
 	virtual btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info) BT_OVERRIDE;
 
@@ -178,6 +183,9 @@ private:
 	void prepareWarmStart(btPass pass, btPersistentManifold** manifolds, int numManifolds, btScalar timeStep);
 	void prepareWeightFeelingWarmStart(btPass pass, btManifoldPoint& cp, btScalar lightWeightImpulse);
 	void warmStartWeightPass(int numFreeBodies);
+	void recordTotalsBefore();
+	bool weightPassAccepted(int numFreeBodies);
+	btScalar totalBefore(const btManifoldPoint* cp) const;
 	btContactSolverInfo makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const;
 
 	btShockPropagationSettings m_settings;
@@ -204,11 +212,26 @@ private:
 	// layers above withheld from it; per solver body of the current pass, its node if fixated.
 	bool m_weightFeelingActive = false;
 	int m_currentLayer = 0;
+	btScalar m_layerTimeStep = btScalar(0);
+	struct btBodyVelocity
+	{
+		btVector3 m_linear;
+		btVector3 m_angular;
+	};
+	btAlignedObjectArray<btBodyVelocity> m_layerVelocityBefore;  // per free body of the layer, before the load arrived
 	btAlignedObjectArray<btVector3> m_withheldLinear;
 	btAlignedObjectArray<btVector3> m_withheldAngular;
 	btAlignedObjectArray<char> m_hasWithheld;
 	btAlignedObjectArray<btVector3> m_receivedLinear;   // per node: withheld impulse handed over in this weight pass
-	btAlignedObjectArray<btVector3> m_layerSupport;     // per free solver body: sum of U d over its lower contacts
+	btAlignedObjectArray<btVector3> m_layerSupport;     // per free solver body: warm-start impulse added to it
+	btAlignedObjectArray<btScalar> m_weightWarmStart;   // per contact row of the weight pass
+	struct btManifoldAddress
+	{
+		const btManifoldPoint* m_points;  // the manifold's point cache
+		int m_index;                      // index into m_manifolds
+	};
+	btAlignedObjectArray<btManifoldAddress> m_manifoldByAddress;  // sorted by m_points
+	btAlignedObjectArray<btScalar> m_totalBefore;  // per manifold and point: T at the start of the step
 	btAlignedObjectArray<int> m_nodeOfSolverBody;
 };
 

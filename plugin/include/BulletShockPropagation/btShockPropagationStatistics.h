@@ -25,6 +25,8 @@ struct btShockPropagationStatistics
 	int m_numFixatedBodies = 0;   ///< body fixations over all layers (a body is fixated at most once)
 	int m_numLayeredGroups = 0;   ///< groups solved layer by layer (the others had no stacks)
 	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (see README)
+	int m_numWeightSweeps = 0;    ///< PGS sweeps of the weight pass, over all its layers (D13)
+	int m_numWeightRejections = 0;///< weight-pass layers whose re-solve was rejected (D13 guard)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).
