@@ -35,6 +35,14 @@ inline harness::SolverSpec shockSolverOnly(int iterations = 10, double f = btSho
 	return s;
 }
 
+/// The plugin with weight feeling (D13): the world, default settings otherwise.
+inline harness::SolverSpec weightFeeling(int iterations = 10, double f = btShockPropagationSettings().m_weighting)
+{
+	harness::SolverSpec s = shock(iterations, f);
+	s.weightFeeling = true;
+	return s;
+}
+
 /// The plugin in either mode (ShockWorld or ShockSolverOnly) with its default settings.
 inline harness::SolverSpec plugin(harness::SolverKind kind)
 {

@@ -28,7 +28,8 @@ class HardCase : public ::testing::TestWithParam<harness::SolverSpec>
 
 std::string solverName(const ::testing::TestParamInfo<harness::SolverSpec>& info)
 {
-	return info.param.kind == harness::SolverKind::StockSI ? "StockSI" : "ShockPropagation";
+	if (info.param.kind == harness::SolverKind::StockSI) return "StockSI";
+	return info.param.weightFeeling ? "ShockPropagationWeightFeeling" : "ShockPropagation";
 }
 }  // namespace
 
@@ -136,7 +137,7 @@ TEST_P(HardCase, LeaningStackWhoseBoxesOverhangHalfTopples)
 	EXPECT_GT(run.drift->drift(run.named("top")), 0.5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, HardCase, ::testing::Values(spec::shock(), spec::stock(10)), solverName);
+INSTANTIATE_TEST_SUITE_P(Registry, HardCase, ::testing::Values(spec::shock(), spec::weightFeeling(), spec::stock(10)), solverName);
 
 // Where stock SI fails, the plugin's expectation alone.
 

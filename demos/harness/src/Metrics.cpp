@@ -48,6 +48,22 @@ double maxSpeed(const std::vector<btRigidBody*>& bodies)
 	return fastest;
 }
 
+namespace
+{
+/// Vertical (+y) impulse of one manifold's points on `supported`, one of its two bodies.
+double upwardImpulseOn(const btPersistentManifold* m, const btCollisionObject* supported)
+{
+	double impulseUp = 0;
+	for (int j = 0; j < m->getNumContacts(); ++j)
+	{
+		const btManifoldPoint& cp = m->getContactPoint(j);
+		// m_normalWorldOnB points from B to A: the impulse on A is +normal * impulse.
+		impulseUp += cp.m_normalWorldOnB.y() * cp.m_appliedImpulse;
+	}
+	return m->getBody0() == supported ? impulseUp : -impulseUp;
+}
+}  // namespace
+
 double groundReactionOverWeight(btDispatcher& dispatcher, const btCollisionObject* ground,
 								const std::vector<btRigidBody*>& bodies, double timeStep, double gravity)
 {
@@ -59,17 +75,22 @@ double groundReactionOverWeight(btDispatcher& dispatcher, const btCollisionObjec
 	for (int i = 0; i < dispatcher.getNumManifolds(); ++i)
 	{
 		const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
-		const bool groundIsB = m->getBody1() == ground;
-		if (m->getBody0() != ground && !groundIsB) continue;
-		for (int j = 0; j < m->getNumContacts(); ++j)
-		{
-			const btManifoldPoint& cp = m->getContactPoint(j);
-			// m_normalWorldOnB points from B to A: the impulse on A is +normal * impulse.
-			const double up = cp.m_normalWorldOnB.y() * cp.m_appliedImpulse;
-			impulseUp += groundIsB ? up : -up;
-		}
+		if (m->getBody0() == ground) impulseUp += upwardImpulseOn(m, m->getBody1());
+		else if (m->getBody1() == ground) impulseUp += upwardImpulseOn(m, m->getBody0());
 	}
 	return impulseUp / timeStep / weight;
+}
+
+double supportForce(btDispatcher& dispatcher, const btCollisionObject* upper, const btCollisionObject* lower, double timeStep)
+{
+	double impulseUp = 0;
+	for (int i = 0; i < dispatcher.getNumManifolds(); ++i)
+	{
+		const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
+		const bool pair = (m->getBody0() == upper && m->getBody1() == lower) || (m->getBody0() == lower && m->getBody1() == upper);
+		if (pair) impulseUp += upwardImpulseOn(m, upper);
+	}
+	return impulseUp / timeStep;
 }
 
 DriftTracker::DriftTracker(const std::vector<btRigidBody*>& bodies) : m_bodies(bodies)

@@ -89,6 +89,61 @@ std::unique_ptr<SceneContent> createSeesaw(btDiscreteDynamicsWorld& world, const
 }
 
 // ---------------------------------------------------------------------------------------------------
+// loaded_plank: a plank resting on two posts (dynamic, on the ground) with a heavy box off centre. Statics
+// (lever rule): the support under x_s carries W_plank / 2 + W_load (1/2 + sign(x_s) x / span). The posts
+// are thin along x, so where on a post's top the force acts changes the lever arms by at most
+// postWidth / span (3% by default): wide supports make the split statically indeterminate.
+
+Params loadedPlankParams()
+{
+	return {
+		{"span", 3, "m", "distance between the support centres"},
+		{"offset", 0.75, "m", "load centre's distance from the plank centre towards the right support"},
+		{"plankLength", 4, "m", "plank extent along x"},
+		{"plankThickness", 0.2, "m", "plank extent along y"},
+		{"plankMass", 2, "kg", "mass of the plank"},
+		{"loadMass", 5, "kg", "mass of the load box"},
+		{"size", 0.5, "m", "edge of the load box; depth of the posts and of the plank"},
+		{"postWidth", 0.1, "m", "post extent along x"},
+		{"postHeight", 0.2, "m", "post extent along y"},
+		{"supportMass", 1, "kg", "mass of each post"},
+		{"mu", 0.6, "-", build::kMuDescription},
+	};
+}
+
+std::unique_ptr<SceneContent> createLoadedPlank(btDiscreteDynamicsWorld& world, const Params& params)
+{
+	const btScalar span = build::positiveParam(params, "span");
+	const btScalar offset = build::nonNegativeParam(params, "offset");
+	const btScalar size = build::positiveParam(params, "size");
+	const btScalar postWidth = build::positiveParam(params, "postWidth");
+	const btScalar postHeight = build::positiveParam(params, "postHeight");
+	const btVector3 plankHalf = btScalar(0.5) * btVector3(build::positiveParam(params, "plankLength"), build::positiveParam(params, "plankThickness"), size);
+	const btScalar plankMass = build::positiveParam(params, "plankMass");
+	const btScalar loadMass = build::positiveParam(params, "loadMass");
+	const btScalar supportMass = build::positiveParam(params, "supportMass");
+	const btScalar mu = build::nonNegativeParam(params, "mu");
+	build::require(span > postWidth + btScalar(build::kSideGap), "span must keep the posts apart");
+	build::require(plankHalf.x() >= (span + postWidth) / 2, "plankLength must cover both posts");
+	build::require(offset + size / 2 <= plankHalf.x(), "offset must keep the load on the plank");
+
+	auto content = std::make_unique<SceneContent>(world);
+	build::addGround(*content, 2 * plankHalf.x(), mu);
+	btCollisionShape* cubeShape = content->addShape(new btBoxShape(btVector3(size / 2, size / 2, size / 2)));
+	btCollisionShape* postShape = content->addShape(new btBoxShape(btVector3(postWidth / 2, postHeight / 2, size / 2)));
+	const btScalar supportY = build::columnCentreY(0, postHeight / 2, 0);
+	content->name("leftSupport", content->addBody(postShape, supportMass, build::at(-span / 2, supportY, 0), mu));
+	content->name("rightSupport", content->addBody(postShape, supportMass, build::at(span / 2, supportY, 0), mu));
+	const btScalar plankY = build::columnCentreY(supportY + postHeight / 2, plankHalf.y(), 0);
+	btCollisionShape* plankShape = content->addShape(new btBoxShape(plankHalf));
+	content->name("plank", content->addBody(plankShape, plankMass, build::at(0, plankY, 0), mu));
+	content->name("load", content->addBody(cubeShape, loadMass, build::at(offset, build::columnCentreY(plankY + plankHalf.y(), size / 2, 0), 0), mu));
+	content->facts["rightShare"] = 0.5 + offset / span;  // share of the load on the right support
+	build::finishScene(*content, true);
+	return content;
+}
+
+// ---------------------------------------------------------------------------------------------------
 // friction_ramp: cubes side by side across a static ramp, cube k with friction mu_k from 0 to muMax; a
 // cube slides exactly when mu_k < tan(angle). A static stop block past the ramp's foot catches the
 // sliders (the mu = 0 cube would otherwise glide on for ever).

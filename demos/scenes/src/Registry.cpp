@@ -29,6 +29,7 @@ const std::vector<SceneEntry>& registry()
 		{"hard", "mass_ratio_tower", "Four-box tower whose top box is 1000 times heavier than the rest.", createMassRatioTower, massRatioTowerParams()},
 		{"hard", "large_on_small", "A heavy slab bridging two light cubes under its ends (mass ratio 100).", createLargeOnSmall, largeOnSmallParams()},
 		{"hard", "seesaw", "Plank balanced on a static edge with a stack on its left end: it must tip left and carry the weight.", createSeesaw, seesawParams()},
+		{"hard", "loaded_plank", "Plank on two thin posts with a heavy box off centre: the posts share the load by the lever rule.", createLoadedPlank, loadedPlankParams()},
 		{"hard", "door", "Lintel on two columns of equal height made of 2 and 4 boxes (goal post).", createDoor, doorParams()},
 		{"hard", "arch", "Semicircular arch of 17 wedge voussoirs on the ground; holds only through friction at every joint (hard case).", createArch, archParams()},
 		{"hard", "card_house", "House of thin cards: leaning pairs form tents, flat cards carry the next level (hard case).", createCardHouse, cardHouseParams()},

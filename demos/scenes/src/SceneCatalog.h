@@ -50,10 +50,12 @@ Params cardHouseParams();
 
 // MechanismScenes.cpp
 std::unique_ptr<SceneContent> createSeesaw(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createLoadedPlank(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createFrictionRamp(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createDominoRow(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createHingeBridge(btDiscreteDynamicsWorld& world, const Params& params);
 Params seesawParams();
+Params loadedPlankParams();
 Params frictionRampParams();
 Params dominoRowParams();
 Params hingeBridgeParams();

@@ -22,6 +22,10 @@ double maxSpeed(const std::vector<btRigidBody*>& bodies);
 double groundReactionOverWeight(btDispatcher& dispatcher, const btCollisionObject* ground,
 								const std::vector<btRigidBody*>& bodies, double timeStep, double gravity);
 
+/// Vertical (+y) contact force (newtons) that `lower` exerted on `upper` in the last step, from
+/// btManifoldPoint::m_appliedImpulse / timeStep.
+double supportForce(btDispatcher& dispatcher, const btCollisionObject* upper, const btCollisionObject* lower, double timeStep);
+
 /// Positions at a reference time; drift = displacement of each body's centre of mass since then.
 class DriftTracker
 {

@@ -1,0 +1,165 @@
+// Weight feeling (issue 7, decision D13): with it, the plugin's contact forces are the forces of
+// statics while the stacks still stand. Expectations come from statics (total weight, symmetry,
+// the lever rule), not from recorded runs. Each force is averaged over the last second of a run.
+#include "Fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using spec::SceneRun;
+
+namespace
+{
+constexpr double kGravity = 9.81;
+
+double weightOf(const btRigidBody* body)
+{
+	return kGravity / body->getInvMass();
+}
+
+/// Runs `seconds`, then averages `measure()` over one more second.
+template <class Measure>
+double averageOverLastSecond(SceneRun& run, double seconds, Measure measure)
+{
+	run.run(seconds);
+	const int steps = int(1.0 / spec::kTimeStepSeconds + 0.5);
+	double sum = 0;
+	for (int i = 0; i < steps; ++i)
+	{
+		run.run(spec::kTimeStepSeconds);
+		sum += measure();
+	}
+	return sum / steps;
+}
+
+double groundOverWeight(SceneRun& run)
+{
+	return harness::groundReactionOverWeight(*run.sim->world().getDispatcher(), run.scene->ground(), run.bodies,
+											 spec::kTimeStepSeconds, kGravity);
+}
+
+struct Mode
+{
+	harness::SolverSpec solver;
+	const char* name;
+};
+
+class WeightFeeling : public ::testing::TestWithParam<Mode>
+{
+};
+
+std::string modeName(const ::testing::TestParamInfo<Mode>& info)
+{
+	return info.param.name;
+}
+
+harness::SolverSpec solverOnlyWeightFeeling()
+{
+	harness::SolverSpec s = spec::weightFeeling();
+	s.kind = harness::SolverKind::ShockSolverOnly;
+	return s;
+}
+}  // namespace
+
+TEST_P(WeightFeeling, GroundCarriesTheWholeTowerOf10And40)
+{
+	for (int n : {10, 40})
+	{
+		SceneRun run("tower", GetParam().solver, {{"n", n}});
+		const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
+		EXPECT_NEAR(ground, 1.0, 0.05) << "tower of " << n << ": ground reaction / total weight";
+		EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters) << "tower of " << n;
+	}
+}
+
+TEST_P(WeightFeeling, LintelOnEqualColumnsPutsHalfItsWeightOnEach)
+{
+	// Column tops 0.1 m wide at +-1.25 m: where on a top the lintel presses moves the split by at
+	// most 4% (wide tops would make it statically indeterminate).
+	SceneRun run("door", GetParam().solver, {{"left", 2}, {"right", 2}, {"size", 0.1}});
+	const btRigidBody* lintel = run.named("lintel");
+	btDispatcher& dispatcher = *run.sim->world().getDispatcher();
+	double left = 0, right = 0;
+	averageOverLastSecond(run, 2.0, [&] {
+		left += harness::supportForce(dispatcher, lintel, run.named("leftTop"), spec::kTimeStepSeconds);
+		right += harness::supportForce(dispatcher, lintel, run.named("rightTop"), spec::kTimeStepSeconds);
+		return 0.0;
+	});
+	const double steps = std::round(1.0 / spec::kTimeStepSeconds);
+	const double half = weightOf(lintel) / 2;
+	EXPECT_NEAR(left / steps, half, 0.1 * half) << "N on the left column";
+	EXPECT_NEAR(right / steps, half, 0.1 * half) << "N on the right column";
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+}
+
+TEST_P(WeightFeeling, PlankSharesAnOffCentreLoadByTheLeverRule)
+{
+	SceneRun run("loaded_plank", GetParam().solver);
+	const btRigidBody* plank = run.named("plank");
+	const double rightShare = run.scene->facts.at("rightShare");
+	ASSERT_GT(rightShare, 0.6) << "the scene should load the right support more";
+	btDispatcher& dispatcher = *run.sim->world().getDispatcher();
+	double left = 0, right = 0;
+	averageOverLastSecond(run, 2.0, [&] {
+		left += harness::supportForce(dispatcher, plank, run.named("leftSupport"), spec::kTimeStepSeconds);
+		right += harness::supportForce(dispatcher, plank, run.named("rightSupport"), spec::kTimeStepSeconds);
+		return 0.0;
+	});
+	const double steps = std::round(1.0 / spec::kTimeStepSeconds);
+	const double load = weightOf(run.named("load"));
+	const double expectedLeft = weightOf(plank) / 2 + load * (1 - rightShare);
+	const double expectedRight = weightOf(plank) / 2 + load * rightShare;
+	EXPECT_NEAR(left / steps, expectedLeft, 0.1 * expectedLeft) << "N on the left support";
+	EXPECT_NEAR(right / steps, expectedRight, 0.1 * expectedRight) << "N on the right support";
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+}
+
+TEST_P(WeightFeeling, SeesawTipsToTheHeavySideAndRestsThere)
+{
+	// Two cubes on the heavy end: the default five topple off the tipped plank (their centre of mass
+	// is over the edge at its 14 degrees) and the light cube then tips it back, as physics says.
+	SceneRun run("seesaw", GetParam().solver, {{"stack", 2}});
+	const btRigidBody* plank = run.named("plank");
+	run.run(6.0);
+	const double rise = plank->getWorldTransform().getBasis().getColumn(0).y();  // > 0: +x end up
+	EXPECT_GT(rise, std::sin(0.1)) << "the heavy (-x) end should be down";
+	EXPECT_LT(harness::kineticEnergy(run.bodies), 1e-3) << "J: the seesaw should have come to rest";
+}
+
+TEST_P(WeightFeeling, DoorWithUnequalColumnsStandsWithoutAnEnergySpike)
+{
+	SceneRun run("door", GetParam().solver);
+	double peakEnergy = 0;
+	for (int i = 0; i < 300; ++i)
+	{
+		run.sim->step();
+		peakEnergy = std::max(peakEnergy, harness::kineticEnergy(run.bodies));
+	}
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(peakEnergy, 0.05) << "J: the lintel jammed or jumped";
+	EXPECT_NEAR(groundOverWeight(run), 1.0, 0.05);
+}
+
+TEST_P(WeightFeeling, MassRatio1000TowerStandsAndWeighsRight)
+{
+	SceneRun run("mass_ratio_tower", GetParam().solver);
+	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
+	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_NEAR(ground, 1.0, 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, WeightFeeling,
+						 ::testing::Values(Mode{spec::weightFeeling(10, 0.0), "WorldF0"}, Mode{spec::weightFeeling(), "World"},
+										   Mode{solverOnlyWeightFeeling(), "SolverOnly"}),
+						 modeName);
+
+// Without the mode the same statics fail: the tests above can fail.
+TEST(WithoutWeightFeeling, GroundCarriesOnlyPartOfTheTower)
+{
+	SceneRun run("tower", spec::shock(10, 0.0), {{"n", 10}});
+	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
+	EXPECT_LT(ground, 0.5) << "f = 0 fixation withholds the weight of the boxes above";
+}
