@@ -113,6 +113,17 @@ btScalar lighterWeight(const btPersistentManifold* manifold)
 	return lightest;
 }
 
+/// Calls visit(row, kind) for every row of Bullet's four row pools.
+template <class Visit>
+void visitRows(btConstraintArray& contacts, btConstraintArray& frictions, btConstraintArray& rollingFrictions, btConstraintArray& joints,
+			   Visit visit)
+{
+	for (int i = 0; i < contacts.size(); ++i) visit(contacts[i], BT_ROW_CONTACT);
+	for (int i = 0; i < frictions.size(); ++i) visit(frictions[i], BT_ROW_FRICTION);
+	for (int i = 0; i < rollingFrictions.size(); ++i) visit(rollingFrictions[i], BT_ROW_ROLLING_FRICTION);
+	for (int i = 0; i < joints.size(); ++i) visit(joints[i], BT_ROW_JOINT);
+}
+
 double millisecondsSince(btClock& clock)
 {
 	return double(clock.getTimeMicroseconds()) * 1e-3;
@@ -495,24 +506,12 @@ void btShockPropagationConstraintSolver::prepareWeightPass(int numFreeBodies, co
 	// The free bodies already received this step's gravity (layer pass) and the reactions from
 	// above: take the external impulses out of the rows and bodies, and let the contact rows
 	// continue from the layer pass's impulse L (total minus global share) without applying it again.
-	struct Pool
-	{
-		btConstraintArray* rows;
-		btSolverRowKind kind;
-	} pools[] = {{&m_tmpSolverContactConstraintPool, BT_ROW_CONTACT},
-				 {&m_tmpSolverContactFrictionConstraintPool, BT_ROW_FRICTION},
-				 {&m_tmpSolverContactRollingFrictionConstraintPool, BT_ROW_ROLLING_FRICTION},
-				 {&m_tmpSolverNonContactConstraintPool, BT_ROW_JOINT}};
-	for (const Pool& pool : pools)
-	{
-		for (int i = 0; i < pool.rows->size(); ++i)
-		{
-			btSolverConstraint& row = (*pool.rows)[i];
-			const bool freeA = row.m_solverBodyIdA < numFreeBodies;
-			const bool freeB = row.m_solverBodyIdB < numFreeBodies;
-			btRemoveExternalImpulse(row, pool.kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], freeA, freeB, info.m_damping);
-		}
-	}
+	visitRows(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverContactRollingFrictionConstraintPool,
+			  m_tmpSolverNonContactConstraintPool, [&](btSolverConstraint& row, btSolverRowKind kind) {
+				  const bool freeA = row.m_solverBodyIdA < numFreeBodies;
+				  const bool freeB = row.m_solverBodyIdB < numFreeBodies;
+				  btRemoveExternalImpulse(row, kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], freeA, freeB, info.m_damping);
+			  });
 	for (int id = 0; id < numFreeBodies && id < m_tmpSolverBodyPool.size(); ++id)
 	{
 		m_tmpSolverBodyPool[id].m_externalForceImpulse.setZero();
@@ -614,42 +613,31 @@ void btShockPropagationConstraintSolver::withholdReactions()
 {
 	// Sum J_F^T lambda over the rows with a fixated end F into F's withheld impulse. The weight
 	// pass's contact rows started at the layer pass's impulse, already withheld: count the change.
-	struct Pool
-	{
-		btConstraintArray* rows;
-		bool continued;
-	} pools[] = {{&m_tmpSolverContactConstraintPool, m_pass == BT_PASS_WEIGHT},
-				 {&m_tmpSolverContactFrictionConstraintPool, false},
-				 {&m_tmpSolverContactRollingFrictionConstraintPool, false},
-				 {&m_tmpSolverNonContactConstraintPool, false}};
-	for (const Pool& pool : pools)
-	{
-		for (int i = 0; i < pool.rows->size(); ++i)
-		{
-			const btSolverConstraint& row = (*pool.rows)[i];
-			btScalar lambda = btScalar(row.m_appliedImpulse);
-			if (pool.continued)
-			{
-				const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
-				lambda -= btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);
-			}
-			if (lambda == btScalar(0)) continue;
-			const int nodeA = m_nodeOfSolverBody[row.m_solverBodyIdA];
-			const int nodeB = m_nodeOfSolverBody[row.m_solverBodyIdB];
-			if (nodeA >= 0)
-			{
-				m_withheldLinear[nodeA] += row.m_contactNormal1 * lambda;
-				m_withheldAngular[nodeA] += row.m_relpos1CrossNormal * lambda;
-				m_hasWithheld[nodeA] = 1;
-			}
-			if (nodeB >= 0)
-			{
-				m_withheldLinear[nodeB] += row.m_contactNormal2 * lambda;
-				m_withheldAngular[nodeB] += row.m_relpos2CrossNormal * lambda;
-				m_hasWithheld[nodeB] = 1;
-			}
-		}
-	}
+	const bool continued = m_pass == BT_PASS_WEIGHT;
+	visitRows(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverContactRollingFrictionConstraintPool,
+			  m_tmpSolverNonContactConstraintPool, [&](btSolverConstraint& row, btSolverRowKind kind) {
+				  btScalar lambda = btScalar(row.m_appliedImpulse);
+				  if (continued && kind == BT_ROW_CONTACT)
+				  {
+					  const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+					  lambda -= btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);
+				  }
+				  if (lambda == btScalar(0)) return;
+				  const int nodeA = m_nodeOfSolverBody[row.m_solverBodyIdA];
+				  const int nodeB = m_nodeOfSolverBody[row.m_solverBodyIdB];
+				  if (nodeA >= 0)
+				  {
+					  m_withheldLinear[nodeA] += row.m_contactNormal1 * lambda;
+					  m_withheldAngular[nodeA] += row.m_relpos1CrossNormal * lambda;
+					  m_hasWithheld[nodeA] = 1;
+				  }
+				  if (nodeB >= 0)
+				  {
+					  m_withheldLinear[nodeB] += row.m_contactNormal2 * lambda;
+					  m_withheldAngular[nodeB] += row.m_relpos2CrossNormal * lambda;
+					  m_hasWithheld[nodeB] = 1;
+				  }
+			  });
 }
 
 btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass, const btContactSolverInfo& info, btScalar timeStep) const
@@ -853,27 +841,15 @@ void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, co
 	params.m_sor = info.m_sor;
 	params.m_jointDamping = info.m_damping;
 
-	struct Pool
-	{
-		btConstraintArray* rows;
-		btSolverRowKind kind;
-	} pools[] = {{&m_tmpSolverContactConstraintPool, BT_ROW_CONTACT},
-				 {&m_tmpSolverContactFrictionConstraintPool, BT_ROW_FRICTION},
-				 {&m_tmpSolverContactRollingFrictionConstraintPool, BT_ROW_ROLLING_FRICTION},
-				 {&m_tmpSolverNonContactConstraintPool, BT_ROW_JOINT}};
-	for (const Pool& pool : pools)
-	{
-		for (int i = 0; i < pool.rows->size(); ++i)
-		{
-			btSolverConstraint& row = (*pool.rows)[i];
-			const bool fixA = m_isFixatedSolverBody[row.m_solverBodyIdA] != 0;
-			const bool fixB = m_isFixatedSolverBody[row.m_solverBodyIdB] != 0;
-			if (fixA || fixB)
-			{
-				btFixateSolverRow(row, pool.kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], fixA, fixB, params);
-			}
-		}
-	}
+	visitRows(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverContactRollingFrictionConstraintPool,
+			  m_tmpSolverNonContactConstraintPool, [&](btSolverConstraint& row, btSolverRowKind kind) {
+				  const bool fixA = m_isFixatedSolverBody[row.m_solverBodyIdA] != 0;
+				  const bool fixB = m_isFixatedSolverBody[row.m_solverBodyIdB] != 0;
+				  if (fixA || fixB)
+				  {
+					  btFixateSolverRow(row, kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], fixA, fixB, params);
+				  }
+			  });
 	for (int id = 0; id < numSolverBodies; ++id)
 	{
 		if (m_isFixatedSolverBody[id])

@@ -41,6 +41,26 @@ double groundOverWeight(SceneRun& run)
 											 spec::kTimeStepSeconds, kGravity);
 }
 
+struct SupportForces
+{
+	double left = 0;   ///< N
+	double right = 0;  ///< N
+};
+
+/// Runs 2 s, then averages the vertical forces of `left` and `right` on `upper` over one more second.
+SupportForces averageSupportForces(SceneRun& run, const btRigidBody* upper, const btRigidBody* left, const btRigidBody* right)
+{
+	btDispatcher& dispatcher = *run.sim->world().getDispatcher();
+	SupportForces sum;
+	const double steps = std::round(1.0 / spec::kTimeStepSeconds);
+	averageOverLastSecond(run, 2.0, [&] {
+		sum.left += harness::supportForce(dispatcher, upper, left, spec::kTimeStepSeconds) / steps;
+		sum.right += harness::supportForce(dispatcher, upper, right, spec::kTimeStepSeconds) / steps;
+		return 0.0;
+	});
+	return sum;
+}
+
 struct Mode
 {
 	harness::SolverSpec solver;
@@ -81,17 +101,10 @@ TEST_P(WeightFeeling, LintelOnEqualColumnsPutsHalfItsWeightOnEach)
 	// most 4% (wide tops would make it statically indeterminate).
 	SceneRun run("door", GetParam().solver, {{"left", 2}, {"right", 2}, {"size", 0.1}});
 	const btRigidBody* lintel = run.named("lintel");
-	btDispatcher& dispatcher = *run.sim->world().getDispatcher();
-	double left = 0, right = 0;
-	averageOverLastSecond(run, 2.0, [&] {
-		left += harness::supportForce(dispatcher, lintel, run.named("leftTop"), spec::kTimeStepSeconds);
-		right += harness::supportForce(dispatcher, lintel, run.named("rightTop"), spec::kTimeStepSeconds);
-		return 0.0;
-	});
-	const double steps = std::round(1.0 / spec::kTimeStepSeconds);
+	const SupportForces forces = averageSupportForces(run, lintel, run.named("leftTop"), run.named("rightTop"));
 	const double half = weightOf(lintel) / 2;
-	EXPECT_NEAR(left / steps, half, 0.1 * half) << "N on the left column";
-	EXPECT_NEAR(right / steps, half, 0.1 * half) << "N on the right column";
+	EXPECT_NEAR(forces.left, half, 0.1 * half) << "N on the left column";
+	EXPECT_NEAR(forces.right, half, 0.1 * half) << "N on the right column";
 	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
 }
 
@@ -101,19 +114,12 @@ TEST_P(WeightFeeling, PlankSharesAnOffCentreLoadByTheLeverRule)
 	const btRigidBody* plank = run.named("plank");
 	const double rightShare = run.scene->facts.at("rightShare");
 	ASSERT_GT(rightShare, 0.6) << "the scene should load the right support more";
-	btDispatcher& dispatcher = *run.sim->world().getDispatcher();
-	double left = 0, right = 0;
-	averageOverLastSecond(run, 2.0, [&] {
-		left += harness::supportForce(dispatcher, plank, run.named("leftSupport"), spec::kTimeStepSeconds);
-		right += harness::supportForce(dispatcher, plank, run.named("rightSupport"), spec::kTimeStepSeconds);
-		return 0.0;
-	});
-	const double steps = std::round(1.0 / spec::kTimeStepSeconds);
+	const SupportForces forces = averageSupportForces(run, plank, run.named("leftSupport"), run.named("rightSupport"));
 	const double load = weightOf(run.named("load"));
 	const double expectedLeft = weightOf(plank) / 2 + load * (1 - rightShare);
 	const double expectedRight = weightOf(plank) / 2 + load * rightShare;
-	EXPECT_NEAR(left / steps, expectedLeft, 0.1 * expectedLeft) << "N on the left support";
-	EXPECT_NEAR(right / steps, expectedRight, 0.1 * expectedRight) << "N on the right support";
+	EXPECT_NEAR(forces.left, expectedLeft, 0.1 * expectedLeft) << "N on the left support";
+	EXPECT_NEAR(forces.right, expectedRight, 0.1 * expectedRight) << "N on the right support";
 	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
 }
 
@@ -129,18 +135,14 @@ TEST_P(WeightFeeling, SeesawTipsToTheHeavySideAndRestsThere)
 	EXPECT_LT(harness::kineticEnergy(run.bodies), 1e-3) << "J: the seesaw should have come to rest";
 }
 
-TEST_P(WeightFeeling, DoorWithUnequalColumnsStandsWithoutAnEnergySpike)
+// The door's standing without an energy spike is HardCase.DoorWithUnequalColumnsStandsWithoutJamming,
+// which runs with weight feeling too; here, its weight reaches the ground.
+TEST_P(WeightFeeling, DoorWithUnequalColumnsPassesItsWeightToTheGround)
 {
 	SceneRun run("door", GetParam().solver);
-	double peakEnergy = 0;
-	for (int i = 0; i < 300; ++i)
-	{
-		run.sim->step();
-		peakEnergy = std::max(peakEnergy, harness::kineticEnergy(run.bodies));
-	}
+	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
+	EXPECT_NEAR(ground, 1.0, 0.05);
 	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
-	EXPECT_LT(peakEnergy, 0.05) << "J: the lintel jammed or jumped";
-	EXPECT_NEAR(groundOverWeight(run), 1.0, 0.05);
 }
 
 TEST_P(WeightFeeling, MassRatio1000TowerStandsAndWeighsRight)

@@ -72,17 +72,22 @@ subject to the following restrictions:
 ///     m_correctionSlop of penetration. Both keep a corrected contact visible to the next step.
 ///  D12 beyond the paper: layers are ordered by support as well as BFS distance (btStackLayers,
 ///     m_supportOrdering), so a body is never fixated under a free body that rests on it.
-///  D13 beyond the paper: weight feeling (m_weightFeeling, setWeightFeeling). A fixated body
-///     does not feel the impulses of the rows that hold the layer above it, so with f = 0 the
-///     ground carries one box of a tower and a load does not tip a plank. The layer pass records,
-///     per fixated body, the impulse it withheld (sum of J_F^T lambda over the layer's rows with
-///     the body as fixated end F). The weight pass then runs top-down: the free bodies of layer k
-///     receive what the layers above withheld from them (applied to their velocities), and layer
-///     k is re-solved with its lower bodies still fixated. The re-solve continues from the layer
-///     pass's impulses (no warm start applied twice), without gravity (already applied) and
-///     without correction; its extra impulses are withheld from the bodies below in turn. Layers
-///     whose free bodies received nothing are skipped (the top layer always). Layer data of the
-///     step are reused. Cost: up to one more layer pass.
+///  D13 beyond the paper: weight feeling (m_weightFeeling, setWeightFeeling; off by default). A
+///     fixated body does not feel the impulses of the rows that hold the layer above it, so with
+///     f = 0 the ground carries one box of a tower and a load does not tip a plank. The layer pass
+///     records, per fixated body, the impulse it withheld (sum of J_F^T lambda over the layer's rows
+///     with the body as fixated end F). The weight pass then runs top-down (after Xiong et al.,
+///     "Two-Pass Shock Propagation", SCA 2025): the free bodies of layer k receive what the layers
+///     above withheld from them (applied to their velocities), and layer k is re-solved with its
+///     lower bodies still fixated, for m_weightIterations (40) sweeps; its extra impulses are
+///     withheld from the bodies below in turn. The re-solve continues from the layer pass's
+///     impulses (not applied twice), without gravity (already applied) and without correction. Its
+///     contacts to the layer below start from the previous step's share of the load, scaled so the
+///     start adds no more than the load handed down (warmStartWeightPass). Guard: a re-solve after
+///     which a body rises faster than before its load arrived (it did not converge) is rejected; the
+///     layer keeps its layer-pass result and hands nothing further down (statistics count it).
+///     Layers whose free bodies received nothing are skipped (the top layer always); the layer
+///     data of the step are reused. Cost: one more pass over every loaded layer, at 40 sweeps.
 ///
 /// Bad input: a body whose transform or velocity is NaN or Inf is left out of every pass (it
 /// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or
