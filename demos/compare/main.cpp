@@ -35,6 +35,7 @@ struct Options
 	std::vector<double> slops{-1};
 	bool supportOrdering = true;
 	bool stopApproach = true;
+	int weightSweeps = -1;
 	bool seed = false;
 };
 
@@ -94,6 +95,7 @@ void usage()
 				 "  --slop M,N,...        plugin: correction slop values in metres (default 0.0005)\n"
 				 "  --bfs-layers          plugin: plain BFS layers, no support ordering (D12 off)\n"
 				 "  --no-stop-approach    plugin: position-only second correction (D11 off)\n"
+				 "  --weight-sweeps N     plugin with weight feeling (sp-wf): sweeps per loaded layer (default 40)\n"
 				 "  --no-progress         no progress bar\n"
 				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
 }
@@ -141,6 +143,12 @@ Options parse(int argc, char** argv)
 		else if (a == "--slop") o.slops = parseList<double>(value(), "slop", toDouble);
 		else if (a == "--bfs-layers") o.supportOrdering = false;
 		else if (a == "--no-stop-approach") o.stopApproach = false;
+		else if (a == "--weight-sweeps")
+		{
+			const std::vector<int> n = parseList<int>(value(), "weight-sweeps", toInt);
+			if (n.size() != 1 || n[0] < 1) fail("--weight-sweeps wants one count >= 1");
+			o.weightSweeps = n[0];
+		}
 		else if (a == "--fixation")
 		{
 			const std::string m = value();
@@ -192,6 +200,7 @@ std::vector<harness::SolverSpec> expand(const Options& o)
 					s.correctionSlop = o.slops[j];
 					s.supportOrdering = o.supportOrdering;
 					s.stopApproach = o.stopApproach;
+					s.weightIterations = o.weightSweeps;
 					specs.push_back(s);
 				}
 			}

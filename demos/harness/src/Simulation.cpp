@@ -92,6 +92,7 @@ std::string SolverSpec::label() const
 		if (correctionSlop >= 0) out << " slop=" << correctionSlop;
 		if (!supportOrdering) out << " bfs";
 		if (!stopApproach) out << " nostop";
+		if (weightFeeling && weightIterations > 0) out << " sweeps=" << weightIterations;
 	}
 	return out.str();
 }
@@ -117,6 +118,7 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 		settings.m_supportOrdering = spec.supportOrdering;
 		settings.m_correctionStopsApproach = spec.stopApproach;
 		settings.m_weightFeeling = spec.weightFeeling;
+		if (spec.weightIterations > 0) settings.m_weightIterations = spec.weightIterations;
 		m_shockSolver = new btShockPropagationConstraintSolver(settings);
 		m_solver.reset(m_shockSolver);
 	}

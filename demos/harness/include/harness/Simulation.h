@@ -35,6 +35,7 @@ struct SolverSpec
 	bool supportOrdering = true;     ///< plugin only: m_supportOrdering (D12)
 	bool stopApproach = true;        ///< plugin only: m_correctionStopsApproach (D11)
 	bool weightFeeling = false;      ///< plugin only: m_weightFeeling (D13); names sp-wf, sp-solver-wf
+	int weightIterations = -1;       ///< plugin only: m_weightIterations, -1 = default
 	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp"
 	std::string label() const;  ///< name() with iterations and any non-default plugin option
 };
