@@ -2,6 +2,8 @@
 
 #include <BulletShockPropagation/btShockPropagationConstraintSolver.h>
 
+#include <algorithm>
+
 namespace viewer
 {
 namespace
@@ -29,9 +31,21 @@ Rgb layerlessColour() { return {0.78f, 0.62f, 0.45f}; }  // sandstone
 
 Rgb staticColour() { return {0.55f, 0.55f, 0.58f}; }
 
+Rgb driftColour(double driftMetres)
+{
+	const Rgb rest = layerlessColour(), moved = {0.85f, 0.12f, 0.10f};
+	const float t = float(std::min(1.0, std::max(0.0, driftMetres / harness::kStandingDriftMeters)));
+	return {rest.r + (moved.r - rest.r) * t, rest.g + (moved.g - rest.g) * t, rest.b + (moved.b - rest.b) * t};
+}
+
 std::unordered_map<const btCollisionObject*, Rgb> bodyColours(harness::Trial& trial, ColourMode mode)
 {
 	std::unordered_map<const btCollisionObject*, Rgb> colours;
+	if (mode == ColourMode::Drift)
+	{
+		for (const btRigidBody* body : trial.bodies()) colours[body] = driftColour(trial.drift().drift(body));
+		return colours;
+	}
 	const btShockPropagationConstraintSolver* solver = trial.simulation().shockSolver();
 	if (mode != ColourMode::StackLayer || !solver) return colours;
 	for (int i = 0; i < solver->getNumLayeredBodies(); ++i)

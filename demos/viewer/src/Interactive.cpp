@@ -56,8 +56,8 @@ bool isShock(const harness::SolverSpec& s)
 class App
 {
 public:
-	App(GLFWwindow* window, const ComparisonSetup& setup, const DrawOptions& draw)
-		: m_window(window), m_setup(setup), m_draw(draw), m_comparison(new Comparison(setup))
+	App(GLFWwindow* window, const ComparisonSetup& setup, const DrawOptions& draw, const OrbitCamera& camera)
+		: m_window(window), m_setup(setup), m_draw(draw), m_comparison(new Comparison(setup)), m_camera(camera)
 	{
 		m_weighting = float(setup.solvers.front().weighting);
 		m_frameCamera = true;
@@ -294,11 +294,14 @@ void App::drawPanel()
 	ImGui::Text("t = %.3f s, frame %d, %d box(es) shot", m_comparison->time(), m_comparison->steps(), m_comparison->shotBoxes());
 
 	section("draw");
-	int mode = m_draw.colours == ColourMode::StackLayer ? 0 : 1;
-	ImGui::RadioButton("stack layers (L)", &mode, 0);
+	int mode = int(m_draw.colours);
+	ImGui::RadioButton("stack layers (L)", &mode, int(ColourMode::StackLayer));
 	ImGui::SameLine();
-	ImGui::RadioButton("plain", &mode, 1);
-	m_draw.colours = mode == 0 ? ColourMode::StackLayer : ColourMode::Plain;
+	ImGui::RadioButton("drift", &mode, int(ColourMode::Drift));
+	ImGui::SameLine();
+	ImGui::RadioButton("plain", &mode, int(ColourMode::Plain));
+	m_draw.colours = ColourMode(mode);
+	if (m_draw.colours == ColourMode::Drift) ImGui::TextWrapped("red: moved 1 cm or more from the start (\"fallen\")");
 	if (m_draw.colours == ColourMode::StackLayer)
 	{
 		ImGui::TextUnformatted("height");
@@ -377,7 +380,7 @@ void glfwErrorToStderr(int code, const char* description)
 }
 }  // namespace
 
-int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw)
+int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw, const OrbitCamera& camera)
 {
 	glfwSetErrorCallback(glfwErrorToStderr);
 	if (!glfwInit())
@@ -415,7 +418,7 @@ int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw)
 	ImGui_ImplOpenGL3_Init("#version 330 core");
 	int code = 0;
 	{
-		App app(window, setup, draw);
+		App app(window, setup, draw, camera);
 		while (!glfwWindowShouldClose(window))
 		{
 			glfwPollEvents();

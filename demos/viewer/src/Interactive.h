@@ -8,5 +8,5 @@ namespace viewer
 {
 /// Opens the window and runs until it is closed. Returns the process exit code: 0, or 1 with a
 /// message on stderr when no window can be opened (no display), pointing to --headless.
-int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw);
+int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw, const OrbitCamera& camera);
 }  // namespace viewer

@@ -99,7 +99,7 @@ void loadLabelFont(float pixels)
 	}
 }
 
-OffscreenText::OffscreenText(float fontPixels)
+OffscreenText::OffscreenText(float fontPixels) : m_fontPixels(fontPixels)
 {
 	m_previous = ImGui::GetCurrentContext();
 	m_context = ImGui::CreateContext();

@@ -44,6 +44,7 @@ uniform vec3 uColour;
 uniform vec3 uScale;
 uniform int uMode;   // 0 body, 1 ground (checkered), 2 unlit
 uniform int uEdges;  // 1: darken a box's edges (about one pixel wide)
+uniform float uAlpha;
 out vec4 fragColour;
 void main()
 {
@@ -67,7 +68,7 @@ void main()
 		float edge = min(d.x, min(d.y, d.z));
 		c *= mix(0.45, 1.0, smoothstep(0.4, 1.4, edge));
 	}
-	fragColour = vec4(c * light, 1.0);
+	fragColour = vec4(c * light, uAlpha);
 }
 )";
 
@@ -155,6 +156,9 @@ void setVertexLayout()
 	glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
 }
 
+/// Opacity of static bodies other than the ground.
+const float kStaticAlpha = 0.35f;
+
 enum ShaderMode
 {
 	kModeBody = 0,
@@ -185,6 +189,7 @@ Renderer::Renderer()
 	m_uColour = glGetUniformLocation(m_program, "uColour");
 	m_uMode = glGetUniformLocation(m_program, "uMode");
 	m_uEdges = glGetUniformLocation(m_program, "uEdges");
+	m_uAlpha = glGetUniformLocation(m_program, "uAlpha");
 
 	std::vector<float> vertices;
 	std::vector<unsigned> indices;
@@ -231,6 +236,7 @@ void Renderer::drawTrial(harness::Trial& trial, const OrbitCamera& camera, const
 	glUseProgram(m_program);
 	const Mat4 viewProj = camera.projection(viewport.aspect()) * camera.view();
 	glUniformMatrix4fv(m_uViewProj, 1, GL_FALSE, viewProj.m);
+	glUniform1f(m_uAlpha, 1);
 
 	const auto colours = bodyColours(trial, options.colours);
 	const btCollisionObject* ground = trial.scene().ground();
@@ -238,24 +244,30 @@ void Renderer::drawTrial(harness::Trial& trial, const OrbitCamera& camera, const
 	for (int i = 0; i < objects.size(); ++i)
 	{
 		const btCollisionObject& object = *objects[i];
-		int mode = kModeBody;
-		Rgb colour = layerlessColour();
 		if (&object == ground)
 		{
-			mode = kModeGround;
-			colour = groundColour();
+			drawBody(object, groundColour(), kModeGround);
 		}
-		else if (object.isStaticOrKinematicObject())
-		{
-			colour = staticColour();
-		}
-		else
+		else if (!object.isStaticOrKinematicObject())
 		{
 			const auto found = colours.find(&object);
-			if (found != colours.end()) colour = found->second;
+			drawBody(object, found != colours.end() ? found->second : layerlessColour(), kModeBody);
 		}
-		drawBody(object, colour, mode);
 	}
+	// Static bodies other than the ground (pit walls, ramps, posts) last and translucent, so they
+	// never hide what moves.
+	glEnable(GL_BLEND);
+	glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+	glDepthMask(GL_FALSE);
+	glUniform1f(m_uAlpha, kStaticAlpha);
+	for (int i = 0; i < objects.size(); ++i)
+	{
+		const btCollisionObject& object = *objects[i];
+		if (&object != ground && object.isStaticOrKinematicObject()) drawBody(object, staticColour(), kModeBody);
+	}
+	glUniform1f(m_uAlpha, 1);
+	glDepthMask(GL_TRUE);
+	glDisable(GL_BLEND);
 	if (options.contacts) drawContacts(trial, options);
 	glBindVertexArray(0);
 	glUseProgram(0);

@@ -35,6 +35,8 @@ struct Options
 	std::vector<double> times;
 	std::vector<int> frames;
 	int cellWidth = 320, cellHeight = 240;
+	viewer::OrbitCamera camera;  // yaw and pitch of the pictures
+	double frameTime = -1;       // s; -1: frame the start
 };
 
 [[noreturn]] void fail(const std::string& message)
@@ -85,8 +87,8 @@ void usage()
 				 "                         (default 10,100,10 with the default solvers, else 10)\n"
 				 "  --f F                  plugin weighting in [0, 1] (default 0.5)\n"
 				 "  --dt S                 time step in seconds (default 1/60)\n"
-				 "  --colour layers|plain  body colours: stack layer (default in the window) or plain\n"
-				 "                         (default headless)\n"
+				 "  --colour MODE          body colours: layers = stack layer (default in the window),\n"
+				 "                         drift = red as a body moves up to 1 cm, plain (default headless)\n"
 				 "  --contacts             draw contact points and normal forces\n"
 				 "headless:\n"
 				 "  --headless             render offscreen (EGL) and write a PNG instead of a window\n"
@@ -94,6 +96,9 @@ void usage()
 				 "  --times S,T,...        one row per simulated time in seconds (default 4)\n"
 				 "  --frames N,M,...       one row per frame number (steps) instead\n"
 				 "  --size WxH             pixels per viewport (default 320x240)\n"
+				 "  --yaw DEG, --pitch DEG camera direction (default 26, 17: from the front right, above)\n"
+				 "  --frame-at S           frame the bodies as they lie at S seconds (last solver), not\n"
+				 "                         as they start (for piles that settle)\n"
 				 "In the window: left drag orbits, right drag pans, the wheel zooms, a middle click or\n"
 				 "shift + left click shoots a box; space pauses, S steps, R resets, F frames the scene.\n";
 }
@@ -140,8 +145,9 @@ Options parse(int argc, char** argv)
 		{
 			const std::string mode = value();
 			if (mode == "layers") o.draw.colours = viewer::ColourMode::StackLayer;
+			else if (mode == "drift") o.draw.colours = viewer::ColourMode::Drift;
 			else if (mode == "plain") o.draw.colours = viewer::ColourMode::Plain;
-			else fail("unknown colour mode '" + mode + "'; valid: layers, plain");
+			else fail("unknown colour mode '" + mode + "'; valid: layers, drift, plain");
 			o.colourGiven = true;
 		}
 		else if (a == "--contacts") o.draw.contacts = true;
@@ -156,6 +162,17 @@ Options parse(int argc, char** argv)
 		{
 			o.frames.clear();
 			for (const std::string& s : split(value(), "frame")) o.frames.push_back(toInt(s));
+		}
+		else if (a == "--yaw") o.camera.yaw = toDouble(value()) * M_PI / 180;
+		else if (a == "--pitch")
+		{
+			o.camera.pitch = toDouble(value()) * M_PI / 180;
+			if (!(std::fabs(o.camera.pitch) <= 85 * M_PI / 180)) fail("--pitch must be within -85..85 degrees");
+		}
+		else if (a == "--frame-at")
+		{
+			o.frameTime = toDouble(value());
+			if (!(o.frameTime >= 0 && o.frameTime <= 3600)) fail("--frame-at must be in [0, 3600] seconds");
 		}
 		else if (a == "--size")
 		{
@@ -190,6 +207,7 @@ Options parse(int argc, char** argv)
 	if (o.solvers.size() > 8) fail("at most 8 solvers (viewports)");
 	if (!o.headless && (!o.out.empty() || !o.times.empty() || !o.frames.empty()))
 		fail("--out, --times and --frames need --headless");
+	if (!std::isfinite(o.camera.yaw)) fail("--yaw must be finite");
 	if (o.headless)
 	{
 		if (o.out.empty()) fail("--headless needs --out FILE.png");
@@ -219,6 +237,9 @@ int runHeadless(const Options& o)
 	strip.colours = o.draw.colours;
 	strip.contacts = o.draw.contacts;
 	strip.framesNotSeconds = !o.frames.empty();
+	strip.yaw = o.camera.yaw;
+	if (o.frameTime >= 0) strip.frameSteps = int(std::lround(o.frameTime / o.setup.timeStep));
+	strip.pitch = o.camera.pitch;
 	if (strip.framesNotSeconds)
 		strip.checkpoints = o.frames;
 	else
@@ -254,7 +275,7 @@ int main(int argc, char** argv)
 	}
 	try
 	{
-		return o.headless ? runHeadless(o) : viewer::runInteractive(o.setup, o.draw);
+		return o.headless ? runHeadless(o) : viewer::runInteractive(o.setup, o.draw, o.camera);
 	}
 	catch (const std::exception& e)
 	{

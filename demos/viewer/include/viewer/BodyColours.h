@@ -1,5 +1,5 @@
 // How the viewer colours bodies: by stack layer (the plugin's contact-graph heights of the last
-// step, so the layering is visible), or plainly (one brick colour, shaded per body).
+// step, so the layering is visible), by drift (how far each body moved from its start), or plainly.
 #pragma once
 
 #include <harness/Trial.h>
@@ -17,6 +17,7 @@ struct Rgb
 enum class ColourMode
 {
 	StackLayer,  ///< plugin viewports: colour of each body's stack height; stock ones: plain
+	Drift,       ///< plain colour turning red as a body moves up to harness::kStandingDriftMeters
 	Plain        ///< every dynamic body in the plain colour
 };
 
@@ -30,6 +31,9 @@ Rgb layerColour(int height);
 Rgb layerlessColour();
 /// Static bodies other than the ground (ramps, posts).
 Rgb staticColour();
+/// Drift colouring: layerlessColour() at rest, red from harness::kStandingDriftMeters (the
+/// demo's "fallen") on, blended linearly in between.
+Rgb driftColour(double driftMetres);
 
 /// Colour of every dynamic body of a trial, by `mode`. Bodies missing from the map are drawn in
 /// layerlessColour() (or the static colour).

@@ -42,8 +42,10 @@ public:
 	ImDrawList& begin(int width, int height);
 	/// Draws what was added since begin() into the bound framebuffer.
 	void end();
+	float fontPixels() const { return m_fontPixels; }
 
 private:
+	float m_fontPixels;
 	ImGuiContext* m_context = nullptr;
 	ImGuiContext* m_previous = nullptr;
 };

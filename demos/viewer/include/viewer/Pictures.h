@@ -19,10 +19,15 @@ struct StripOptions
 {
 	std::vector<int> checkpoints;          ///< frames (steps since reset), ascending; one row each
 	bool framesNotSeconds = false;         ///< label rows "frame N" instead of "t = S s"
-	int cellWidth = 320, cellHeight = 240; ///< pixels per viewport
+	int cellWidth = 320, cellHeight = 240; ///< pixels per viewport (its label band comes on top)
 	ColourMode colours = ColourMode::Plain;
 	bool contacts = false;
 	int samples = 4;                       ///< multisampling
+	double yaw = OrbitCamera().yaw;        ///< rad, camera direction about the vertical
+	double pitch = OrbitCamera().pitch;    ///< rad above the horizontal (higher to look into a pit)
+	/// Frame the bodies as they are after this many steps under the last solver (a throwaway run),
+	/// for scenes that start spread out and settle (dense_random); -1: as they start.
+	int frameSteps = -1;
 };
 
 /// Steps `comparison` to each checkpoint in turn and draws every trial there; the camera frames
@@ -30,7 +35,8 @@ struct StripOptions
 /// current OpenGL 3.3 context (OffscreenContext).
 Image renderStrip(Comparison& comparison, const StripOptions& options, Renderer& renderer, OffscreenText& text);
 
-/// The camera every picture uses for this comparison: yaw and pitch of OrbitCamera's defaults,
-/// framing the dynamic bodies of the first trial now.
-OrbitCamera pictureCamera(Comparison& comparison, double aspect);
+/// The camera every picture uses for this comparison: the options' yaw and pitch, framing the
+/// dynamic bodies of the first trial now, or of a throwaway run after options.frameSteps (and
+/// the ground under them).
+OrbitCamera pictureCamera(Comparison& comparison, const StripOptions& options, double aspect);
 }  // namespace viewer

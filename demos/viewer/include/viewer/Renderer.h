@@ -1,5 +1,6 @@
 // Draws one trial's world into one viewport with OpenGL 3.3: shaded bodies with dark edges,
-// a checkered ground, optionally contact points and normal forces. The same code draws the
+// a checkered ground, translucent static bodies (pit walls, ramps), optionally contact points and
+// normal forces. The same code draws the
 // interactive window and the offscreen pictures.
 #pragma once
 
@@ -52,6 +53,6 @@ private:
 	unsigned m_program = 0;
 	unsigned m_cubeVao = 0, m_cubeVbo = 0, m_cubeEbo = 0;
 	unsigned m_dynamicVao = 0, m_dynamicVbo = 0;  // hulls and lines, refilled per draw
-	int m_uViewProj = -1, m_uModel = -1, m_uScale = -1, m_uColour = -1, m_uMode = -1, m_uEdges = -1;
+	int m_uViewProj = -1, m_uModel = -1, m_uScale = -1, m_uColour = -1, m_uMode = -1, m_uEdges = -1, m_uAlpha = -1;
 };
 }  // namespace viewer
