@@ -369,7 +369,8 @@ void App::frame()
 			lines.push_back(f);
 		}
 		for (const std::string& l : metricLines(trial)) lines.push_back(l);
-		drawTextBlock(*ImGui::GetBackgroundDrawList(), float(views[size_t(i)].x) * toWindow + 6, 6, lines, true);
+		drawTextBlock(*ImGui::GetBackgroundDrawList(), float(views[size_t(i)].x) * toWindow + 6, 6, lines, true,
+					  float(views[size_t(i)].width) * toWindow - 12);
 	}
 }
 

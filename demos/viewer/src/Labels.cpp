@@ -5,6 +5,7 @@
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -61,19 +62,24 @@ std::vector<std::string> metricLines(const harness::Trial& trial)
 	return lines;
 }
 
-float drawTextBlock(ImDrawList& list, float x, float y, const std::vector<std::string>& lines, bool titleFirst)
+float drawTextBlock(ImDrawList& list, float x, float y, const std::vector<std::string>& lines, bool titleFirst, float maxWidth)
 {
 	ImFont* regular = ImGui::GetIO().Fonts->Fonts[0];
 	ImFont* bold = ImGui::GetIO().Fonts->Fonts.Size > 1 ? ImGui::GetIO().Fonts->Fonts[1] : regular;
-	const float size = regular->FontSize, pad = 4, gap = 1;
-	float width = 0, height = 0;
+	const float pad = 4, gap = 1;
+	float size = regular->FontSize, width = 0;
 	for (size_t i = 0; i < lines.size(); ++i)
 	{
 		ImFont* font = titleFirst && i == 0 ? bold : regular;
-		const ImVec2 extent = font->CalcTextSizeA(size, 1e6f, 0, lines[i].c_str());
-		width = std::max(width, extent.x);
-		height += size + gap;
+		width = std::max(width, font->CalcTextSizeA(size, 1e6f, 0, lines[i].c_str()).x);
 	}
+	if (maxWidth > 0 && width + 2 * pad > maxWidth)
+	{
+		const float scale = std::max(0.6f, (maxWidth - 2 * pad) / width);  // below 60% it is unreadable anyway
+		size *= scale;
+		width *= scale;
+	}
+	const float height = float(lines.size()) * (size + gap);
 	list.AddRectFilled(ImVec2(x, y), ImVec2(x + width + 2 * pad, y + height + 2 * pad), IM_COL32(255, 255, 255, 200), 3);
 	float row = y + pad;
 	for (size_t i = 0; i < lines.size(); ++i)

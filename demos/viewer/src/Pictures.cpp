@@ -102,7 +102,7 @@ Image renderStrip(Comparison& comparison, const StripOptions& options, Renderer&
 		}
 	}
 	ImDrawList& list = text.begin(width, height);
-	for (const Label& l : labels) drawTextBlock(list, l.x, l.y, l.lines, true);
+	for (const Label& l : labels) drawTextBlock(list, l.x, l.y, l.lines, true, float(options.cellWidth));
 	text.end();
 	return framebuffer.read();
 }

@@ -31,6 +31,7 @@ struct Options
 	viewer::DrawOptions draw;
 	bool colourGiven = false;
 	bool headless = false;
+	bool palette = false;
 	std::string out;
 	std::vector<double> times;
 	std::vector<int> frames;
@@ -96,6 +97,7 @@ void usage()
 				 "  --times S,T,...        one row per simulated time in seconds (default 4)\n"
 				 "  --frames N,M,...       one row per frame number (steps) instead\n"
 				 "  --size WxH             pixels per viewport (default 320x240)\n"
+				 "  --palette              write a 256-colour PNG (about 40% of the bytes)\n"
 				 "  --yaw DEG, --pitch DEG camera direction (default 26, 17: from the front right, above)\n"
 				 "  --frame-at S           frame the bodies as they lie at S seconds (last solver), not\n"
 				 "                         as they start (for piles that settle)\n"
@@ -153,6 +155,7 @@ Options parse(int argc, char** argv)
 		else if (a == "--contacts") o.draw.contacts = true;
 		else if (a == "--headless") o.headless = true;
 		else if (a == "--out") o.out = value();
+		else if (a == "--palette") o.palette = true;
 		else if (a == "--times")
 		{
 			o.times.clear();
@@ -205,8 +208,8 @@ Options parse(int argc, char** argv)
 		o.setup.solvers.push_back(spec);
 	}
 	if (o.solvers.size() > 8) fail("at most 8 solvers (viewports)");
-	if (!o.headless && (!o.out.empty() || !o.times.empty() || !o.frames.empty()))
-		fail("--out, --times and --frames need --headless");
+	if (!o.headless && (!o.out.empty() || !o.times.empty() || !o.frames.empty() || o.palette))
+		fail("--out, --times, --frames and --palette need --headless");
 	if (!std::isfinite(o.camera.yaw)) fail("--yaw must be finite");
 	if (o.headless)
 	{
@@ -251,7 +254,7 @@ int runHeadless(const Options& o)
 	viewer::Renderer renderer;
 	viewer::OffscreenText text;
 	const viewer::Image image = viewer::renderStrip(comparison, strip, renderer, text);
-	if (!viewer::writePng(o.out, image, error))
+	if (!viewer::writePng(o.out, image, error, o.palette))
 	{
 		std::cerr << "bsp_viewer: " << error << "\n";
 		return 1;

@@ -21,8 +21,9 @@ std::string formatLength(double metres);
 std::vector<std::string> metricLines(const harness::Trial& trial);
 
 /// A block of text lines on a light translucent box with its top-left corner at (x, y) (pixels,
-/// origin top-left); the first line is bold if `titleFirst`. Returns the block's height.
-float drawTextBlock(ImDrawList& list, float x, float y, const std::vector<std::string>& lines, bool titleFirst);
+/// origin top-left); the first line is bold if `titleFirst`. A block wider than `maxWidth` (if
+/// > 0) is drawn with a smaller font so it fits. Returns the block's height.
+float drawTextBlock(ImDrawList& list, float x, float y, const std::vector<std::string>& lines, bool titleFirst, float maxWidth = 0);
 
 /// Loads the label font into the current ImGui context: DejaVu Sans at `pixels` if it is
 /// installed (fonts-dejavu-core), else ImGui's built-in font.
