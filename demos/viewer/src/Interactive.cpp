@@ -315,6 +315,13 @@ void App::drawPanel()
 		ImGui::TextWrapped("1 = on the ground. Stock solvers have no layers (sandstone).");
 	}
 	ImGui::Checkbox("contacts and normal forces (C)", &m_draw.contacts);
+	if (m_draw.contacts)
+	{
+		float scale = float(m_draw.forceScale);
+		ImGui::SliderFloat("force scale", &scale, 0.01f, 2, "%.2f m / weight", ImGuiSliderFlags_Logarithmic);
+		m_draw.forceScale = double(scale);
+		ImGui::TextWrapped("red line: normal force, %.2f m per mean body weight", m_draw.forceScale);
+	}
 
 	section("shoot a box (middle click or shift + click)");
 	ImGui::SliderFloat("speed", &m_shotSpeed, 1, 40, "%.1f m/s");

@@ -304,13 +304,9 @@ void Renderer::drawBody(const btCollisionObject& object, const Rgb& colour, int 
 
 void Renderer::drawContacts(harness::Trial& trial, const DrawOptions& options)
 {
-	double metresPerNewton = options.metresPerNewton;
-	if (!(metresPerNewton > 0))
-	{
-		double weight = 0;
-		for (const btRigidBody* b : trial.bodies()) weight += trial.simulation().gravity() / double(b->getInvMass());
-		metresPerNewton = trial.bodies().empty() ? 0.1 : double(trial.bodies().size()) / weight;
-	}
+	double weight = 0;
+	for (const btRigidBody* b : trial.bodies()) weight += trial.simulation().gravity() / double(b->getInvMass());
+	const double metresPerNewton = weight > 0 ? options.forceScale * double(trial.bodies().size()) / weight : 0.0;
 	const double dt = trial.simulation().timeStep();
 	std::vector<float> points, lines;
 	btDispatcher& dispatcher = *trial.simulation().world().getDispatcher();
@@ -322,7 +318,9 @@ void Renderer::drawContacts(harness::Trial& trial, const DrawOptions& options)
 			const btManifoldPoint& cp = m->getContactPoint(j);
 			if (cp.getDistance() > m->getContactProcessingThreshold() && cp.getDistance() > btScalar(0.02)) continue;
 			const btVector3 p = cp.getPositionWorldOnB();
-			const btVector3 q = p + cp.m_normalWorldOnB * btScalar(double(cp.m_appliedImpulse) / dt * metresPerNewton);
+			// m_normalWorldOnB points from B to A; draw the push on whichever body is above.
+			const btVector3 up = cp.m_normalWorldOnB.y() >= 0 ? cp.m_normalWorldOnB : -cp.m_normalWorldOnB;
+			const btVector3 q = p + up * btScalar(double(cp.m_appliedImpulse) / dt * metresPerNewton);
 			points.insert(points.end(), {float(p.x()), float(p.y()), float(p.z()), 0, 0, 0});
 			lines.insert(lines.end(), {float(p.x()), float(p.y()), float(p.z()), 0, 0, 0, float(q.x()), float(q.y()), float(q.z()), 0, 0, 0});
 		}

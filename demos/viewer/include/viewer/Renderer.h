@@ -24,8 +24,9 @@ struct DrawOptions
 {
 	ColourMode colours = ColourMode::StackLayer;
 	bool contacts = false;       ///< contact points and normal-force lines
-	/// Length of a force line per newton (m/N); 0: one metre for the mean body weight of the scene.
-	double metresPerNewton = 0;
+	/// Length of a contact's normal-force line (m) per mean body weight of the scene; the line
+	/// starts at the contact point and points into the upper body (the one it supports).
+	double forceScale = 0.25;
 };
 
 /// Background colour of every viewport (linear RGB), for tests that look for "not blank".
