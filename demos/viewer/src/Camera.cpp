@@ -74,9 +74,10 @@ Mat4 OrbitCamera::projection(double aspect) const
 
 void OrbitCamera::orbit(double dYaw, double dPitch)
 {
-	const double limit = 85.0 * M_PI / 180.0;
+	// Above the ground (seen from below it hides everything) and short of straight down.
+	const double lowest = 1.0 * M_PI / 180.0, highest = 85.0 * M_PI / 180.0;
 	yaw += dYaw;
-	pitch = std::max(-limit, std::min(limit, pitch + dPitch));
+	pitch = std::max(lowest, std::min(highest, pitch + dPitch));
 }
 
 void OrbitCamera::zoom(double factor)
@@ -130,6 +131,8 @@ bool bodyBounds(const std::vector<btRigidBody*>& bodies, btVector3& lo, btVector
 	{
 		btVector3 bmin, bmax;
 		b->getCollisionShape()->getAabb(b->getWorldTransform(), bmin, bmax);
+		const btScalar span = (bmax - bmin).length2() + bmin.length2();
+		if (!(span < btScalar(1e12))) continue;  // NaN, Inf or flung far away: not part of the picture
 		if (!any)
 		{
 			lo = bmin;

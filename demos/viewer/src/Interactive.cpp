@@ -67,7 +67,7 @@ public:
 
 private:
 	void rebuild();
-	void handleInput(int framebufferWidth, int framebufferHeight);
+	void handleInput();
 	void shootAt(double windowX, double windowY);
 	void drawPanel();
 	std::vector<Viewport> viewports(int framebufferWidth, int framebufferHeight) const;
@@ -140,7 +140,7 @@ void App::shootAt(double windowX, double windowY)
 	}
 }
 
-void App::handleInput(int fbWidth, int fbHeight)
+void App::handleInput()
 {
 	ImGuiIO& io = ImGui::GetIO();
 	double x = 0, y = 0;
@@ -164,8 +164,6 @@ void App::handleInput(int fbWidth, int fbHeight)
 	int windowHeight = 1;
 	glfwGetWindowSize(m_window, nullptr, &windowHeight);
 	if (m_dragging[1]) m_camera.pan(-dx / std::max(1, windowHeight), dy / std::max(1, windowHeight));
-	(void)fbWidth;
-	(void)fbHeight;
 
 	if (!io.WantCaptureKeyboard)
 	{
@@ -337,7 +335,7 @@ void App::frame()
 {
 	int fbWidth = 1, fbHeight = 1;
 	glfwGetFramebufferSize(m_window, &fbWidth, &fbHeight);
-	handleInput(fbWidth, fbHeight);
+	handleInput();
 	if (!m_paused || m_stepOnce) m_comparison->step();
 	m_stepOnce = false;
 
@@ -381,16 +379,10 @@ void App::frame()
 	}
 }
 
-void glfwErrorToStderr(int code, const char* description)
-{
-	(void)code;
-	(void)description;  // reported once, where it matters (runInteractive)
-}
 }  // namespace
 
 int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw, const OrbitCamera& camera)
 {
-	glfwSetErrorCallback(glfwErrorToStderr);
 	if (!glfwInit())
 	{
 		const char* description = nullptr;
@@ -424,7 +416,6 @@ int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw, const 
 	loadLabelFont(15);
 	ImGui_ImplGlfw_InitForOpenGL(window, true);
 	ImGui_ImplOpenGL3_Init("#version 330 core");
-	int code = 0;
 	{
 		App app(window, setup, draw, camera);
 		while (!glfwWindowShouldClose(window))
@@ -444,6 +435,6 @@ int runInteractive(const ComparisonSetup& setup, const DrawOptions& draw, const 
 	ImGui::DestroyContext();
 	glfwDestroyWindow(window);
 	glfwTerminate();
-	return code;
+	return 0;
 }
 }  // namespace viewer

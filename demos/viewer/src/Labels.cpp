@@ -47,7 +47,7 @@ std::string formatLength(double metres)
 	return metres < 1 ? format("%.2f cm", metres * 100) : format("%.2f m", metres);
 }
 
-std::vector<std::string> metricLines(const harness::Trial& trial)
+std::vector<std::string> metricLines(harness::Trial& trial)
 {
 	std::vector<std::string> lines;
 	if (trial.steps() == 0) return {"not stepped yet"};
@@ -57,7 +57,7 @@ std::vector<std::string> metricLines(const harness::Trial& trial)
 	lines.push_back(format("penetration %.2f mm", s.penetration.back() * 1e3) + format(" (max %.2f)", sum.maxPenetration * 1e3));
 	lines.push_back(format("ground / weight %.2f", s.groundOverWeight.back()));
 	lines.push_back(format("%.2f ms/step", sum.msPerStep));
-	const btShockPropagationConstraintSolver* solver = const_cast<harness::Trial&>(trial).simulation().shockSolver();
+	const btShockPropagationConstraintSolver* solver = trial.simulation().shockSolver();
 	lines.push_back(solver ? "stack layers " + std::to_string(solver->getStatistics().m_numLayers) : "stack layers: none (stock)");
 	return lines;
 }

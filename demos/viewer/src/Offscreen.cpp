@@ -6,6 +6,8 @@
 #include <EGL/eglext.h>
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>

@@ -31,7 +31,7 @@ public:
 	/// Perspective with near/far planes scaled to the distance (so close-ups and 100 m scenes both work).
 	Mat4 projection(double aspect) const;
 
-	void orbit(double dYaw, double dPitch);  ///< rad; pitch stays within (-85, 85) degrees
+	void orbit(double dYaw, double dPitch);  ///< rad; pitch stays within 1..85 degrees (above the ground)
 	void zoom(double factor);                ///< distance *= factor
 	/// Moves target and eye sideways / up by fractions of the visible height at the target.
 	void pan(double dxFraction, double dyFraction);
@@ -49,6 +49,7 @@ private:
 	void basis(btVector3& forward, btVector3& right, btVector3& up) const;
 };
 
-/// Union of the bodies' AABBs; false (lo, hi untouched) for no body.
+/// Union of the bodies' AABBs (bodies with a non-finite or huge one left out); false (lo, hi
+/// untouched) if none is left.
 bool bodyBounds(const std::vector<btRigidBody*>& bodies, btVector3& lo, btVector3& hi);
 }  // namespace viewer

@@ -18,7 +18,7 @@ std::string solverTitle(const harness::SolverSpec& spec);
 std::string formatLength(double metres);
 /// The demo program's metrics of a trial now: drift (now and max), penetration, ground
 /// reaction / weight, ms/step, stack layers (plugin) - one short line each.
-std::vector<std::string> metricLines(const harness::Trial& trial);
+std::vector<std::string> metricLines(harness::Trial& trial);
 
 /// A block of text lines on a light translucent box with its top-left corner at (x, y) (pixels,
 /// origin top-left); the first line is bold if `titleFirst`. A block wider than `maxWidth` (if
