@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs what a fresh Debian (bookworm) machine lacks to build BulletShockPropagation, its
 # demos and tests: all from Debian's registry. Installs only what is missing.
+# The viewer (demos/viewer) and its headless tests need GLFW, Dear ImGui, libpng, EGL and Mesa's
+# software renderer (llvmpipe, no GPU or display needed) and the DejaVu label font.
 set -euo pipefail
-packages=(cmake g++ make pkg-config libbullet-dev libgtest-dev)
+packages=(cmake g++ make pkg-config libbullet-dev libgtest-dev
+  libglfw3-dev libimgui-dev libpng-dev libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

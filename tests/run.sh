@@ -12,14 +12,14 @@ for precision in float double; do
   [ "$precision" = double ] && double=ON
   build="$root/build/$precision"
   echo "=== $precision precision ==="
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBSP_DOUBLE_PRECISION=$double >/dev/null
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBSP_DOUBLE_PRECISION=$double -DBSP_REQUIRE_VIEWER=ON >/dev/null
   cmake --build "$build" -j "$jobs"
   (cd "$build" && ctest --output-on-failure -j "$jobs" -LE long)
 done
 
 echo "=== float precision, ASan + UBSan ==="
 build="$root/build/sanitize"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBSP_SANITIZE=ON >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBSP_SANITIZE=ON -DBSP_REQUIRE_VIEWER=ON >/dev/null
 cmake --build "$build" -j "$jobs"
 # Any finding fails the test that hit it (UBSan is built with -fno-sanitize-recover).
 export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_string_checks=1"

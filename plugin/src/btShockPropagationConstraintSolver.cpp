@@ -312,6 +312,11 @@ void btShockPropagationConstraintSolver::solveDynamics(const btContactSolverInfo
 {
 	btClock clock;
 	buildGraph();
+	for (int i = 0; i < m_bodies.size(); ++i)
+	{
+		m_layeredBodies.push_back(m_bodies[i]);
+		m_layeredBodyHeights.push_back(m_layers.getHeight(i));
+	}
 	const int numLayers = m_layers.getNumLayers();
 	m_stats.m_numGroups += 1;
 	m_stats.m_numComponents += m_layers.getNumComponents();

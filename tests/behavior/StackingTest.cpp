@@ -158,3 +158,23 @@ TEST(Statistics, GroundOnlyScenesSkipTheLayeredSolve)
 	EXPECT_EQ(stats.m_numLayers, 1);
 	EXPECT_EQ(stats.m_numLayeredGroups, 0);
 }
+
+// The read-only layer record (for viewers): every box of a tower at its height from the ground,
+// in both modes; a stock solver has none.
+TEST(Statistics, LayeredBodiesListEveryTowerBoxAtItsHeightFromTheGround)
+{
+	for (harness::SolverKind kind : {harness::SolverKind::ShockWorld, harness::SolverKind::ShockSolverOnly})
+	{
+		SceneRun run("tower", spec::plugin(kind), {{"n", 5}});
+		run.run(0.1);
+		const btShockPropagationConstraintSolver& solver = *run.sim->shockSolver();
+		ASSERT_EQ(solver.getNumLayeredBodies(), 5);
+		for (int i = 0; i < solver.getNumLayeredBodies(); ++i)
+		{
+			const btCollisionObject* body = solver.getLayeredBody(i);
+			// Boxes 0.5 m tall from y = 0: the centre at 0.25 + 0.5 k is height k + 1.
+			const int expected = int(body->getWorldTransform().getOrigin().y() / 0.5) + 1;
+			EXPECT_EQ(solver.getLayeredBodyHeight(i), expected) << "box at y = " << body->getWorldTransform().getOrigin().y();
+		}
+	}
+}

@@ -124,10 +124,26 @@ public:
 	/// What the last step did (reset at the first solve of each step).
 	const btShockPropagationStatistics& getStatistics() const { return m_stats; }
 
+	/// Stack heights of the last step's dynamics phase, read-only, for viewers and debugging (they
+	/// change nothing in the solve). Entry i is body getLayeredBody(i) at height
+	/// getLayeredBodyHeight(i), as btStackLayers::getHeight gives it: 1 = resting on a static or
+	/// kinematic body, 2 above that, ...; BT_STACK_HEIGHT_UNREACHED in a component with neither.
+	/// Every healthy dynamic body of every solveGroup call is listed once per step, including
+	/// groups solved in one pass (no stacks); static, kinematic, sleeping and skipped (NaN/Inf)
+	/// bodies are not. Cleared with the statistics at the start of each step.
+	int getNumLayeredBodies() const { return m_layeredBodies.size(); }
+	const btCollisionObject* getLayeredBody(int i) const { return m_layeredBodies[i]; }
+	int getLayeredBodyHeight(int i) const { return m_layeredBodyHeights[i]; }
+
 	void setPhase(btPhase phase) { m_phase = phase; }
 	btPhase getPhase() const { return m_phase; }
 	/// Start a new step's statistics (the world calls this; solver-only use resets in prepareSolve).
-	void resetStatistics() { m_stats = btShockPropagationStatistics(); }
+	void resetStatistics()
+	{
+		m_stats = btShockPropagationStatistics();
+		m_layeredBodies.resize(0);
+		m_layeredBodyHeights.resize(0);
+	}
 	btShockPropagationStatistics& getStatisticsForWriting() { return m_stats; }
 
 	virtual void prepareSolve(int numBodies, int numManifolds) BT_OVERRIDE;
@@ -238,6 +254,10 @@ private:
 	btAlignedObjectArray<btManifoldAddress> m_manifoldByAddress;  // sorted by m_points
 	btAlignedObjectArray<btScalar> m_totalBefore;  // per manifold and point: T at the start of the step
 	btAlignedObjectArray<int> m_nodeOfSolverBody;
+
+	// Per step, read-only record for getLayeredBody (capacity kept across steps).
+	btAlignedObjectArray<const btCollisionObject*> m_layeredBodies;
+	btAlignedObjectArray<int> m_layeredBodyHeights;
 };
 
 #endif  // BT_SHOCK_PROPAGATION_CONSTRAINT_SOLVER_H
