@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what a fresh Debian (bookworm) machine lacks to build BulletShockPropagation, its
-# demos and tests: all from Debian's registry. Installs only what is missing.
+# demos and tests: all from Debian's registry. Installs only what is missing. Extra package names
+# given as arguments are installed too (demos/charts.sh adds python3-matplotlib).
 set -euo pipefail
-packages=(cmake g++ make pkg-config libbullet-dev libgtest-dev)
+packages=(cmake g++ make pkg-config libbullet-dev libgtest-dev libeigen3-dev libbenchmark-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -19,6 +19,8 @@ namespace sweep
 ///  - MLCP (Dantzig, O(n^3)) stops as "did not finish" (dnf) once its solve time passes
 ///    mlcpBudgetSeconds, or at once if one step took longer than mlcpStepSeconds; the Dantzig
 ///    solve does not use the iteration count, so that verdict stops every MLCP run of the scene;
+///    on scenes of more than mlcpMaxBodies bodies it is not started (one step of the 210-box pyramid
+///    takes seconds, of the 465-box one about a minute);
 ///  - the first step is captured (harness::ContactRecorder) and measured against the Eigen
 ///    reference: every solver starts from the same state there, so one reference per scene and
 ///    time step serves every configuration (cold start for all: no warm-start history).
@@ -32,6 +34,7 @@ struct ParetoOptions
 	double collapseDriftMeters = 1.0;
 	double mlcpBudgetSeconds = 20;
 	double mlcpStepSeconds = 0.5;
+	int mlcpMaxBodies = 100;
 	bool reference = true;
 };
 void runPareto(const ParetoOptions& options, ResultTable& out, std::vector<std::pair<std::string, std::string>>& notes);
