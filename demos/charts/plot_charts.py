@@ -25,10 +25,10 @@ STYLE = {
     "si-sub4": ("#006400", "v"),
     "nncg": ("#9467bd", "D"),
     "mlcp": ("#7f7f7f", "P"),
-    "sp f=0": ("#fdae61", "*"),
-    "sp f=0.05": ("#f46d43", "*"),
-    "sp f=0.1": ("#d73027", "*"),
-    "sp f=0.25": ("#a50026", "*"),
+    "sp f=0": ("#fdae61", "p"),
+    "sp f=0.05": ("#f46d43", "h"),
+    "sp f=0.1": ("#d73027", "X"),
+    "sp f=0.25": ("#e7298a", "d"),
     "sp f=0.5": ("#67001f", "*"),
 }
 SCENE_TITLES = {
@@ -59,6 +59,14 @@ def read(path):
 
 def num(text):
     return float(text) if text not in ("", None) else math.nan
+
+
+def log_ticks(axis):
+    """Plain numbers on a log axis, with 2 and 5 between the powers of ten."""
+    fmt = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    axis.set_major_formatter(fmt)
+    axis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2.0, 5.0)))
+    axis.set_minor_formatter(fmt)
 
 
 def save(fig, out_dir, name):
@@ -115,6 +123,8 @@ def plot_pareto(rows, out_dir):
                         transform=ax.get_yaxis_transform(), va="center")
             ax.set_xscale("log")
             ax.set_yscale("log")
+            log_ticks(ax.xaxis)
+            ax.tick_params(axis="x", which="minor", labelsize=7)
             ax.set_title(SCENE_TITLES[scene], fontsize=10)
             ax.set_xlabel("ms per step (60 Hz, this machine)", fontsize=9)
             ax.set_ylabel(ylabel, fontsize=9)
@@ -129,10 +139,10 @@ def plot_pareto(rows, out_dir):
                 if ll not in labels:
                     handles.append(hh)
                     labels.append(ll)
-        fig.legend(handles, labels, loc="upper center", ncol=6, fontsize=9, bbox_to_anchor=(0.5, 1.0 + 0.35 / nrows),
+        fig.tight_layout()
+        fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=9, bbox_to_anchor=(0.5, 1.0),
                    title="one marker per iteration count (1, 2, 5, 10, 20, 50, 100, 200; left to right); hollow: stopped early "
                          "(collapsed past 1 m, NaN, or MLCP did not finish)", title_fontsize=9)
-        fig.tight_layout()
         save(fig, out_dir, name)
 
 
@@ -212,13 +222,13 @@ def plot_scaling(rows, out_dir):
         share = [100 * num(r[column]) / num(r["ms_per_step"]) for r in plugin]
         ax2.bar(labels, share, bottom=bottom, color=color, label=label)
         bottom = [b + s for b, s in zip(bottom, share)]
-    ax2.axhline(10, color="black", linestyle=":", linewidth=1)
+    ax2.axhline(10, color="black", linestyle=":", linewidth=1, label="10% (target for graph + layers)")
     ax2.set_xlabel("bodies (pyramid boxes)")
     ax2.set_ylabel("share of a plugin step (%)")
     ax2.set_title(f"Plugin step by phase ({plugin[0]['solver'] if plugin else ''})")
     ax2.tick_params(axis="x", labelrotation=45, labelsize=8)
     ax2.set_ylim(0, 100)
-    ax2.legend(fontsize=7, loc="upper left", framealpha=0.9)
+    ax2.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
 
     ax3.set_xscale("log")
     ax3.set_yscale("log")
@@ -255,6 +265,8 @@ def headline(pareto, scaling):
         small = next((r for r in plugin if int(r["bodies"]) >= 800), plugin[0])
         for column, name in (("ms_per_step", "plugin step"), ("graph_ms", "graph + layers")):
             b0, b1 = int(small["bodies"]), int(big["bodies"])
+            if b1 <= b0:
+                continue
             slope = math.log(num(big[column]) / num(small[column])) / math.log(b1 / b0)
             lines.append(f"{name}: cost ~ bodies^{slope:.2f} from {b0} to {b1} bodies (1.00 = linear)")
     return lines
@@ -270,11 +282,15 @@ def main():
     parts = [os.path.join(results, "pareto.csv")] + sorted(
         os.path.join(results, d, "pareto.csv") for d in os.listdir(results) if d.startswith("pareto-"))
     pareto = [row for path in parts if os.path.exists(path) for row in read(path)]
-    towers = read(os.path.join(results, "towers.csv"))
-    scaling = read(os.path.join(results, "scaling.csv"))
-    plot_pareto(pareto, charts)
-    plot_towers(towers, charts)
-    plot_scaling(scaling, charts)
+    towers_csv, scaling_csv = os.path.join(results, "towers.csv"), os.path.join(results, "scaling.csv")
+    towers = read(towers_csv) if os.path.exists(towers_csv) else []
+    scaling = read(scaling_csv) if os.path.exists(scaling_csv) else []
+    if pareto:
+        plot_pareto(pareto, charts)
+    if towers:
+        plot_towers(towers, charts)
+    if scaling:
+        plot_scaling(scaling, charts)
     lines = headline(pareto, scaling)
     with open(os.path.join(results, "headline.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
