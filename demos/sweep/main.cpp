@@ -113,8 +113,22 @@ int main(int argc, char** argv)
 
 		sweep::ResultTable table;
 		std::vector<std::pair<std::string, std::string>> notes;
-		if (study == "pareto") sweep::runPareto(pareto, table, notes);
-		else if (study == "towers") sweep::runTowers(towers, table, notes);
+		if (study == "pareto")
+		{
+			// Scene by scene, written after each: a long sweep leaves its finished scenes behind.
+			sweep::ParetoOptions one = pareto;
+			for (const sweep::SceneCase& scene : pareto.scenes)
+			{
+				one.scenes = {scene};
+				std::vector<std::pair<std::string, std::string>> sceneNotes;
+				sweep::runPareto(one, table, sceneNotes);
+				notes = sceneNotes;
+				table.writeCsv(outDir + "/" + study + ".csv");
+				table.writeJson(outDir + "/" + study + ".json", notes);
+			}
+			return 0;
+		}
+		if (study == "towers") sweep::runTowers(towers, table, notes);
 		else sweep::runScaling(scaling, table, notes);
 		table.writeCsv(outDir + "/" + study + ".csv");
 		table.writeJson(outDir + "/" + study + ".json", notes);
