@@ -1,10 +1,13 @@
 #include "harness/Simulation.h"
 
+#include "harness/ContactRecorder.h"
+
 #include <BulletDynamics/ConstraintSolver/btNNCGConstraintSolver.h>
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 
+#include <chrono>
 #include <sstream>
 
 namespace harness
@@ -28,6 +31,36 @@ const KindName kKinds[] = {
 	{"sp-wf", SolverKind::ShockWorld, true, "shock propagation with weight feeling (D13)"},
 	{"sp-solver-wf", SolverKind::ShockSolverOnly, true, "shock propagation solver with weight feeling in a stock world"},
 };
+
+/// A world that adds the wall-clock time of each collision detection to *sink (milliseconds).
+template <class World>
+class CollisionTimedWorld : public World
+{
+public:
+	CollisionTimedWorld(double* sink, btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
+						btCollisionConfiguration* configuration)
+		: World(dispatcher, broadphase, solver, configuration), m_sink(sink)
+	{
+	}
+	void performDiscreteCollisionDetection() override
+	{
+		const auto start = std::chrono::steady_clock::now();
+		World::performDiscreteCollisionDetection();
+		*m_sink += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+	}
+
+private:
+	double* m_sink;
+};
+
+/// A solver of type Base wrapped with the recorder's hooks; *recorder points at its recorder.
+template <class Base, class... Args>
+Base* recording(ContactRecorder** recorder, Args&&... args)
+{
+	RecordingSolver<Base>* solver = new RecordingSolver<Base>(std::forward<Args>(args)...);
+	*recorder = &solver->recorder();
+	return solver;
+}
 }  // namespace
 
 std::string solverKindNames()
@@ -119,27 +152,27 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 		settings.m_correctionStopsApproach = spec.stopApproach;
 		settings.m_weightFeeling = spec.weightFeeling;
 		if (spec.weightIterations > 0) settings.m_weightIterations = spec.weightIterations;
-		m_shockSolver = new btShockPropagationConstraintSolver(settings);
+		m_shockSolver = recording<btShockPropagationConstraintSolver>(&m_recorder, settings);
 		m_solver.reset(m_shockSolver);
 	}
 	else if (spec.kind == SolverKind::NNCG)
 	{
-		m_solver.reset(new btNNCGConstraintSolver());
+		m_solver.reset(recording<btNNCGConstraintSolver>(&m_recorder));
 	}
 	else if (spec.kind == SolverKind::MLCPDantzig)
 	{
 		m_mlcpInterface.reset(new btDantzigSolver());
-		m_solver.reset(new btMLCPSolver(m_mlcpInterface.get()));
+		m_solver.reset(recording<btMLCPSolver>(&m_recorder, m_mlcpInterface.get()));
 	}
 	else
 	{
-		m_solver.reset(new btSequentialImpulseConstraintSolver());
+		m_solver.reset(recording<btSequentialImpulseConstraintSolver>(&m_recorder));
 	}
 
 	if (spec.kind == SolverKind::ShockWorld)
-		m_world.reset(new btShockPropagationDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
+		m_world.reset(new CollisionTimedWorld<btShockPropagationDynamicsWorld>(&m_collisionMs, m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
 	else
-		m_world.reset(new btDiscreteDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
+		m_world.reset(new CollisionTimedWorld<btDiscreteDynamicsWorld>(&m_collisionMs, m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
 
 	m_world->setGravity(btVector3(0, btScalar(-gravity), 0));
 	btContactSolverInfo& info = m_world->getSolverInfo();
@@ -158,6 +191,7 @@ Simulation::~Simulation()
 void Simulation::step()
 {
 	const btScalar frame = btScalar(m_timeStep);
+	m_collisionMs = 0;
 	m_world->stepSimulation(frame, m_spec.substeps, frame / btScalar(m_spec.substeps));
 	++m_steps;
 }

@@ -34,7 +34,8 @@ void Trial::step()
 	m_series.penetration.push_back(maxPenetration(dispatcher));
 	m_series.kineticEnergy.push_back(kineticEnergy(m_bodies));
 	m_series.groundOverWeight.push_back(
-		groundReactionOverWeight(dispatcher, m_scene->ground(), m_bodies, m_sim->timeStep(), m_sim->gravity()));
+		// The manifolds hold the impulses of the frame's last sub-step.
+		groundReactionOverWeight(dispatcher, m_scene->ground(), m_bodies, m_sim->timeStep() / m_sim->spec().substeps, m_sim->gravity()));
 	if (m_collapseTime < 0 && drift > kStandingDriftMeters) m_collapseTime = m_sim->time();
 	m_nonFinite = m_nonFinite || anyNonFinite(m_bodies);
 	if (m_sim->shockSolver()) m_layers = std::max(m_layers, m_sim->shockSolver()->getStatistics().m_numLayers);

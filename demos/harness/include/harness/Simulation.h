@@ -13,6 +13,8 @@ class btMLCPSolverInterface;
 
 namespace harness
 {
+class ContactRecorder;
+
 enum class SolverKind
 {
 	StockSI,          ///< btSequentialImpulseConstraintSolver, Bullet defaults
@@ -61,6 +63,11 @@ public:
 	int steps() const { return m_steps; }
 	/// The plugin's solver (nullptr for stock solvers).
 	btShockPropagationConstraintSolver* shockSolver() { return m_shockSolver; }
+	/// Captures a step's contact problem and the solver's impulses (harness/ContactRecorder.h).
+	ContactRecorder& recorder() { return *m_recorder; }
+	/// Wall-clock time of Bullet's collision detection (performDiscreteCollisionDetection, every
+	/// call: the plugin world makes two) in the last step() (ms).
+	double collisionMs() const { return m_collisionMs; }
 
 	/// Advance one frame of timeStep (split into spec().substeps sub-steps).
 	void step();
@@ -77,5 +84,7 @@ private:
 	std::unique_ptr<btMLCPSolverInterface> m_mlcpInterface;
 	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
 	btShockPropagationConstraintSolver* m_shockSolver = nullptr;
+	ContactRecorder* m_recorder = nullptr;
+	double m_collisionMs = 0;
 };
 }  // namespace harness

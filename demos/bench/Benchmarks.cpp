@@ -1,0 +1,129 @@
+// bsp_bench: Google Benchmark microbenchmarks over the registry scenes (not run in CI, only built).
+//   GraphAndLayers/<scene>   the plugin's contact graph + stack layers from a settled world's manifolds
+//   Step/<scene>/<solver>    one 60 Hz step of each solver; counters: drift_mm (largest body
+//                            displacement from the start after the run), pen_mm (deepest contact),
+//                            bodies. Accuracy next to time: a fast configuration that lets the
+//                            scene fall shows it here.
+// Filter with --benchmark_filter, e.g. 'Step/wall/'.
+#include <BulletShockPropagation/btContactGraph.h>
+#include <BulletShockPropagation/btStackLayers.h>
+#include <harness/Metrics.h>
+#include <harness/Simulation.h>
+#include <scenes/Registry.h>
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace
+{
+constexpr int kSettleSteps = 10;  ///< steps before timing: manifolds exist, warm starts are in place
+constexpr int kMaxMLCPBodies = 100;  ///< Dantzig is O(rows^3): bigger scenes take seconds per step
+
+struct World
+{
+	std::unique_ptr<harness::Simulation> sim;
+	std::unique_ptr<scenes::SceneContent> scene;
+	World(const std::string& solver, const std::string& name)
+	{
+		harness::SolverSpec spec;
+		std::string error;
+		harness::parseSolverKind(solver, spec, error);
+		sim.reset(new harness::Simulation(spec));
+		scene = scenes::createScene(sim->world(), name);
+		for (int i = 0; i < kSettleSteps; ++i) sim->step();
+	}
+	~World()
+	{
+		scene.reset();
+		sim.reset();
+	}
+};
+
+/// Edges of the world's manifolds as the plugin's graph sees them (bodies numbered as the scene's
+/// dynamic bodies; static ones are roots; "rests on" from the normal against gravity).
+struct EdgeList
+{
+	int numBodies = 0;
+	std::vector<btContactGraphEdge> edges;
+};
+
+EdgeList edgesOf(World& w)
+{
+	EdgeList list;
+	const std::vector<btRigidBody*> bodies = w.scene->dynamicBodies();
+	std::unordered_map<const btCollisionObject*, int> node;
+	for (size_t i = 0; i < bodies.size(); ++i) node[bodies[i]] = int(i);
+	list.numBodies = int(bodies.size());
+	auto nodeOf = [&](const btCollisionObject* o) {
+		const auto found = node.find(o);
+		return found == node.end() ? int(BT_CONTACT_GRAPH_ROOT) : found->second;
+	};
+	btDispatcher& dispatcher = *w.sim->world().getDispatcher();
+	for (int i = 0; i < dispatcher.getNumManifolds(); ++i)
+	{
+		const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
+		if (m->getNumContacts() == 0) continue;
+		const btScalar up = m->getContactPoint(0).m_normalWorldOnB.y();  // normal from B to A
+		const int support = up > btScalar(0.5) ? BT_SUPPORT_A_ON_B : up < btScalar(-0.5) ? BT_SUPPORT_B_ON_A : BT_SUPPORT_NONE;
+		list.edges.push_back({nodeOf(m->getBody0()), nodeOf(m->getBody1()), i, support});
+	}
+	return list;
+}
+
+void graphAndLayers(benchmark::State& state, const std::string& scene)
+{
+	World w("si", scene);
+	const EdgeList list = edgesOf(w);
+	btContactGraph graph;
+	btStackLayers layers;
+	for (auto _ : state)
+	{
+		graph.reset(list.numBodies);
+		for (const btContactGraphEdge& e : list.edges) graph.addEdge(e.m_bodyA, e.m_bodyB, e.m_source, e.m_support);
+		graph.buildAdjacency();
+		layers.build(graph);
+		benchmark::DoNotOptimize(layers.getNumLayers());
+	}
+	state.counters["bodies"] = list.numBodies;
+	state.counters["edges"] = double(list.edges.size());
+	state.counters["layers"] = layers.getNumLayers();
+}
+
+void step(benchmark::State& state, const std::string& scene, const std::string& solver)
+{
+	World w(solver, scene);
+	const std::vector<btRigidBody*> bodies = w.scene->dynamicBodies();
+	const harness::DriftTracker drift(bodies);  // from the settled state
+	for (auto _ : state) w.sim->step();
+	state.counters["drift_mm"] = drift.maxDrift() * 1e3;
+	state.counters["pen_mm"] = harness::maxPenetration(*w.sim->world().getDispatcher()) * 1e3;
+	state.counters["bodies"] = double(bodies.size());
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	const char* solvers[] = {"si", "si2f", "si-sub4", "nncg", "mlcp", "sp", "sp-solver"};
+	for (const scenes::SceneEntry& e : scenes::registry())
+	{
+		benchmark::RegisterBenchmark(("GraphAndLayers/" + e.name).c_str(), graphAndLayers, e.name)->Unit(benchmark::kMicrosecond);
+		for (const char* solver : solvers)
+		{
+			if (std::string(solver) == "mlcp")
+			{
+				World probe("si", e.name);
+				if (int(probe.scene->dynamicBodies().size()) > kMaxMLCPBodies) continue;
+			}
+			benchmark::RegisterBenchmark(("Step/" + e.name + "/" + solver).c_str(), step, e.name, std::string(solver))->Unit(benchmark::kMillisecond);
+		}
+	}
+	benchmark::Initialize(&argc, argv);
+	if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+	benchmark::RunSpecifiedBenchmarks();
+	benchmark::Shutdown();
+	return 0;
+}

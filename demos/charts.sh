@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Regenerates every chart of README from scratch: installs what is missing (Debian packages:
+# tests/install-deps.sh plus python3-matplotlib), builds bsp_sweep (Release, float), runs the three
+# studies under nice and plots them with Debian's /usr/bin/python3.
+#   results (CSV + JSON): build/sweep/        charts (PNG + SVG): demos/charts/images/
+# The speed-against-accuracy sweep runs as two processes over two halves of the scene list (the
+# machine has two cores); inside each scene every configuration is stepped in lockstep, so load
+# from anything else hits all of them alike. The towers and scaling studies run after it, alone.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$root/tests/install-deps.sh" python3-matplotlib
+build="$root/build/float"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j1 --target bsp_sweep
+sweep="$build/demos/sweep/bsp_sweep"
+results="$root/build/sweep"
+rm -rf "$results"
+mkdir -p "$results/pareto-a" "$results/pareto-b"
+nice -n 10 "$sweep" pareto --out "$results/pareto-a" --scenes pyramid_30,wall,tower_10,tower_20,mass_ratio_100,mass_ratio_1000,seesaw &
+first=$!
+nice -n 10 "$sweep" pareto --out "$results/pareto-b" --scenes round_tower,pyramid_20,tower_40
+wait "$first"
+nice -n 10 "$sweep" scaling --out "$results"
+nice -n 10 "$sweep" towers --out "$results"
+/usr/bin/python3 "$root/demos/charts/plot_charts.py" "$results" "$root/demos/charts/images"

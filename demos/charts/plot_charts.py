@@ -1,0 +1,301 @@
+#!/usr/bin/python3
+"""Charts for README from bsp_sweep's raw results (demos/charts.sh runs it).
+
+usage: plot_charts.py RESULTS_DIR CHARTS_DIR
+
+Reads RESULTS_DIR/{pareto,towers,scaling}.csv (pareto also from RESULTS_DIR/pareto-*/), writes PNG and SVG charts to CHARTS_DIR and prints
+the headline figures (also written to RESULTS_DIR/headline.txt). Needs Debian's python3-matplotlib.
+"""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+STOCK = ["si", "si2f", "si-sub2", "si-sub4", "nncg", "mlcp"]
+# One style per solver variant: colour, marker. Plugin variants share a red ramp and a marker shape family.
+STYLE = {
+    "si": ("#1f77b4", "o"),
+    "si2f": ("#17becf", "s"),
+    "si-sub2": ("#2ca02c", "^"),
+    "si-sub4": ("#006400", "v"),
+    "nncg": ("#9467bd", "D"),
+    "mlcp": ("#7f7f7f", "P"),
+    "sp f=0": ("#fdae61", "p"),
+    "sp f=0.05": ("#f46d43", "h"),
+    "sp f=0.1": ("#d73027", "X"),
+    "sp f=0.25": ("#e7298a", "d"),
+    "sp f=0.5": ("#67001f", "*"),
+}
+SCENE_TITLES = {
+    "tower_10": "tower of 10 boxes",
+    "tower_20": "tower of 20 boxes",
+    "tower_40": "tower of 40 boxes",
+    "pyramid_20": "pyramid, base 20 (210 boxes)",
+    "pyramid_30": "pyramid, base 30 (465 boxes)",
+    "wall": "wall, 200 pieces",
+    "round_tower": "round tower, 320 bricks",
+    "mass_ratio_100": "4-box tower, top 100x heavier",
+    "mass_ratio_1000": "4-box tower, top 1000x heavier",
+    "seesaw": "seesaw with a stack on one end",
+}
+METRICS = [
+    # column, y label, floor for the log axis, file name
+    ("max_drift_m", "max drift over 10 s (m)", 1e-8, "pareto_drift"),
+    ("max_penetration_m", "max penetration over 10 s (m)", 1e-6, "pareto_penetration"),
+    ("ground_error", "ground reaction error |F/W - 1| (last second)", 1e-6, "pareto_ground"),
+    ("residual", "complementarity residual, first step (relative)", 1e-6, "pareto_residual"),
+]
+
+
+def read(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def num(text):
+    return float(text) if text not in ("", None) else math.nan
+
+
+def log_ticks(axis):
+    """Plain numbers on a log axis, with 2 and 5 between the powers of ten."""
+    fmt = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    axis.set_major_formatter(fmt)
+    axis.set_minor_locator(matplotlib.ticker.LogLocator(subs=(2.0, 5.0)))
+    axis.set_minor_formatter(fmt)
+
+
+def save(fig, out_dir, name):
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(out_dir, f"{name}.{ext}"), dpi=80, bbox_inches="tight")
+    plt.close(fig)
+
+
+def pareto_front(points):
+    """Points (x, y) not beaten on both cost and error by another, sorted by cost."""
+    front, best = [], math.inf
+    for x, y in sorted(points):
+        if y < best:
+            front.append((x, y))
+            best = y
+    return front
+
+
+def plot_pareto(rows, out_dir):
+    scenes = [s for s in SCENE_TITLES if any(r["scene"] == s for r in rows)]
+    for column, ylabel, floor, name in METRICS:
+        ncols = 2
+        nrows = math.ceil(len(scenes) / ncols)
+        fig, axes = plt.subplots(nrows, ncols, figsize=(12, 3.4 * nrows), squeeze=False)
+        for ax, scene in zip(axes.flat, scenes):
+            mine = [r for r in rows if r["scene"] == scene]
+            points = []
+            for solver, (color, marker) in STYLE.items():
+                series = sorted((r for r in mine if r["solver"] == solver), key=lambda r: int(r["iterations"]))
+                xs, ys, full = [], [], []
+                for r in series:
+                    x, y = num(r["ms_per_step"]), num(r[column])
+                    if math.isnan(x) or math.isnan(y):
+                        continue
+                    xs.append(x)
+                    ys.append(max(y, floor))
+                    full.append(r["status"] in ("standing", "moved"))
+                    if r["status"] in ("standing", "moved"):
+                        points.append((x, max(y, floor)))
+                if not xs:
+                    continue
+                ax.plot(xs, ys, color=color, linewidth=0.8, alpha=0.6)
+                ax.scatter([x for x, f in zip(xs, full) if f], [y for y, f in zip(ys, full) if f], color=color,
+                           marker=marker, s=36, label=solver, zorder=3)
+                ax.scatter([x for x, f in zip(xs, full) if not f], [y for y, f in zip(ys, full) if not f],
+                           facecolors="none", edgecolors=color, marker=marker, s=36, zorder=3)
+            front = pareto_front(points)
+            if front:
+                fx, fy = zip(*front)
+                ax.step(fx, fy, where="post", color="black", linestyle="--", linewidth=1, label="Pareto front", zorder=2)
+            if column == "max_drift_m":
+                ax.axhline(0.01, color="grey", linestyle=":", linewidth=1)
+                ax.text(ax.get_xlim()[0] if False else 1.02, 0.01, " 1 cm", color="grey", fontsize=8,
+                        transform=ax.get_yaxis_transform(), va="center")
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            log_ticks(ax.xaxis)
+            ax.tick_params(axis="x", which="minor", labelsize=7)
+            ax.set_title(SCENE_TITLES[scene], fontsize=10)
+            ax.set_xlabel("ms per step (60 Hz, this machine)", fontsize=9)
+            ax.set_ylabel(ylabel, fontsize=9)
+            ax.grid(True, which="major", alpha=0.3)
+            ax.tick_params(labelsize=8)
+        for ax in list(axes.flat)[len(scenes):]:
+            ax.axis("off")
+        handles, labels = axes.flat[0].get_legend_handles_labels()
+        for ax in axes.flat:
+            h, l = ax.get_legend_handles_labels()
+            for hh, ll in zip(h, l):
+                if ll not in labels:
+                    handles.append(hh)
+                    labels.append(ll)
+        fig.tight_layout()
+        fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=9, bbox_to_anchor=(0.5, 1.0),
+                   title="one marker per iteration count (1, 2, 5, 10, 20, 50, 100, 200; left to right); hollow: stopped early "
+                         "(collapsed past 1 m, NaN, or MLCP did not finish)", title_fontsize=9)
+        save(fig, out_dir, name)
+
+
+def plot_towers(rows, out_dir):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    limit = max(int(r["max_iterations_tried"]) for r in rows)
+    for solver in dict.fromkeys(r["solver"] for r in rows):
+        color, marker = STYLE.get(solver, ("black", "o"))
+        mine = sorted((r for r in rows if r["solver"] == solver), key=lambda r: int(r["boxes"]))
+        ns = [int(r["boxes"]) for r in mine if r["iterations_needed"]]
+        ks = [num(r["iterations_needed"]) for r in mine if r["iterations_needed"]]
+        ax.plot(ns, ks, color=color, marker=marker, label=solver)
+        missing = [int(r["boxes"]) for r in mine if not r["iterations_needed"]]
+        if missing:
+            ax.scatter(missing, [limit * 1.6] * len(missing), color=color, marker="^", s=50,
+                       label=f"{solver}: none up to {limit}")
+    si = [(int(r["boxes"]), num(r["iterations_needed"])) for r in rows if r["solver"] == "si" and r["iterations_needed"]]
+    if si:
+        n0, k0 = max(si)
+        ns = [2, 40]
+        ax.plot(ns, [k0 * (n / n0) ** 2 for n in ns], color="grey", linestyle=":", label="~ N^2 (seed: O(k n^2))")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xticks([2, 4, 6, 10, 20, 40])
+    ax.get_xaxis().set_major_formatter(matplotlib.ticker.ScalarFormatter())
+    ax.set_ylim(0.7, limit * 3)
+    ax.set_xlabel("boxes in the tower, N")
+    ax.set_ylabel("iterations needed (within 1 cm for 10 s)")
+    ax.set_title("Iterations to keep a tower of N standing")
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, out_dir, "towers_iterations")
+
+
+PHASES = [
+    ("collision_ms", "collision detection (both CDs)", "#bdbdbd"),
+    ("graph_ms", "contact graph + layers", "#e41a1c"),
+    ("global_ms", "global pass, dynamics(f dt)", "#377eb8"),
+    ("layers_ms", "layer passes", "#4daf4a"),
+    ("correction_ms", "second correction", "#984ea3"),
+    ("other_ms", "other (islands, integration)", "#ff7f00"),
+]
+
+
+def plot_scaling(rows, out_dir):
+    fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(16, 4.8))
+    for solver in dict.fromkeys(r["solver"] for r in rows):
+        color, marker = STYLE.get(solver, ("black", "o"))
+        mine = sorted((r for r in rows if r["solver"] == solver), key=lambda r: int(r["bodies"]))
+        bodies = [int(r["bodies"]) for r in mine]
+        ms = [num(r["ms_per_step"]) for r in mine]
+        ax1.plot(bodies, ms, color=color, marker=marker, label=solver)
+        ax3.plot(bodies, [1e3 * m / b for m, b in zip(ms, bodies)], color=color, marker=marker, label=f"{solver}: whole step")
+        if solver.startswith("sp"):
+            ax3.plot(bodies, [1e3 * num(r["graph_ms"]) / b for r, b in zip(mine, bodies)], color=color, marker=marker,
+                     linestyle="--", label=f"{solver}: graph + layers")
+    last = max(rows, key=lambda r: int(r["bodies"]))
+    b_max = int(last["bodies"])
+    for r in rows:
+        if int(r["bodies"]) == b_max:
+            ax1.plot([55, b_max], [num(r["ms_per_step"]) * 55 / b_max, num(r["ms_per_step"])], color="grey", linestyle=":",
+                     linewidth=1)
+    ax1.plot([], [], color="grey", linestyle=":", label="linear in bodies")
+    ax1.set_xscale("log")
+    ax1.set_yscale("log")
+    ax1.set_xlabel("bodies (pyramid boxes)")
+    ax1.set_ylabel("ms per step")
+    ax1.set_title("Cost per step, 10 iterations")
+    ax1.legend(fontsize=8)
+    ax1.grid(True, which="major", alpha=0.3)
+
+    plugin = sorted((r for r in rows if r["solver"].startswith("sp")), key=lambda r: int(r["bodies"]))
+    labels = [r["bodies"] for r in plugin]
+    bottom = [0.0] * len(plugin)
+    for column, label, color in PHASES:
+        share = [100 * num(r[column]) / num(r["ms_per_step"]) for r in plugin]
+        ax2.bar(labels, share, bottom=bottom, color=color, label=label)
+        bottom = [b + s for b, s in zip(bottom, share)]
+    ax2.axhline(10, color="black", linestyle=":", linewidth=1, label="10% (target for graph + layers)")
+    ax2.set_xlabel("bodies (pyramid boxes)")
+    ax2.set_ylabel("share of a plugin step (%)")
+    ax2.set_title(f"Plugin step by phase ({plugin[0]['solver'] if plugin else ''})")
+    ax2.tick_params(axis="x", labelrotation=45, labelsize=8)
+    ax2.set_ylim(0, 100)
+    ax2.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2)
+
+    ax3.set_xscale("log")
+    ax3.set_yscale("log")
+    ax3.set_xlabel("bodies (pyramid boxes)")
+    ax3.set_ylabel("microseconds per body per step")
+    ax3.set_title("Cost per body (flat = linear growth)")
+    ax3.legend(fontsize=8)
+    ax3.grid(True, which="major", alpha=0.3)
+    fig.tight_layout()
+    save(fig, out_dir, "scaling")
+
+
+def headline(pareto, scaling):
+    lines = []
+    for scene in ("wall", "round_tower", "pyramid_30"):
+        mine = [r for r in pareto if r["scene"] == scene and r["status"] == "standing"]
+        sp = [r for r in mine if r["family"] == "sp"]
+        stock = [r for r in mine if r["family"] in STOCK]
+        best_sp = min(sp, key=lambda r: num(r["ms_per_step"]), default=None)
+        best_stock = min(stock, key=lambda r: num(r["ms_per_step"]), default=None)
+
+        def describe(r):
+            return f"{r['solver']} it={r['iterations']} {num(r['ms_per_step']):.3f} ms/step" if r else "none"
+
+        ratio = (num(best_stock["ms_per_step"]) / num(best_sp["ms_per_step"])) if best_sp and best_stock else math.nan
+        lines.append(f"{scene}: cheapest within 1 cm for 10 s: plugin {describe(best_sp)}; stock {describe(best_stock)}; "
+                     f"stock/plugin = {ratio:.2f}x (target >= 10x: {'met' if ratio >= 10 else 'not met'})")
+    plugin = sorted((r for r in scaling if r["solver"].startswith("sp")), key=lambda r: int(r["bodies"]))
+    if plugin:
+        big = plugin[-1]
+        share = 100 * num(big["graph_ms"]) / num(big["ms_per_step"])
+        lines.append(f"graph + layers at {big['bodies']} bodies: {num(big['graph_ms']):.2f} of {num(big['ms_per_step']):.1f} ms "
+                     f"= {share:.1f}% of a plugin step (target < 10%: {'met' if share < 10 else 'not met'})")
+        small = next((r for r in plugin if int(r["bodies"]) >= 800), plugin[0])
+        for column, name in (("ms_per_step", "plugin step"), ("graph_ms", "graph + layers")):
+            b0, b1 = int(small["bodies"]), int(big["bodies"])
+            if b1 <= b0:
+                continue
+            slope = math.log(num(big[column]) / num(small[column])) / math.log(b1 / b0)
+            lines.append(f"{name}: cost ~ bodies^{slope:.2f} from {b0} to {b1} bodies (1.00 = linear)")
+    return lines
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__, file=sys.stderr)
+        sys.exit(2)
+    results, charts = sys.argv[1], sys.argv[2]
+    os.makedirs(charts, exist_ok=True)
+    # pareto.csv, or the parts of demos/charts.sh's two processes (pareto-*/pareto.csv)
+    parts = [os.path.join(results, "pareto.csv")] + sorted(
+        os.path.join(results, d, "pareto.csv") for d in os.listdir(results) if d.startswith("pareto-"))
+    pareto = [row for path in parts if os.path.exists(path) for row in read(path)]
+    towers_csv, scaling_csv = os.path.join(results, "towers.csv"), os.path.join(results, "scaling.csv")
+    towers = read(towers_csv) if os.path.exists(towers_csv) else []
+    scaling = read(scaling_csv) if os.path.exists(scaling_csv) else []
+    if pareto:
+        plot_pareto(pareto, charts)
+    if towers:
+        plot_towers(towers, charts)
+    if scaling:
+        plot_scaling(scaling, charts)
+    lines = headline(pareto, scaling)
+    with open(os.path.join(results, "headline.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

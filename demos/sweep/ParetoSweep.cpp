@@ -1,0 +1,189 @@
+#include "Studies.h"
+
+#include <harness/ContactRecorder.h>
+#include <harness/Trial.h>
+#include <reference/ContactReference.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+namespace sweep
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// One configuration of a scene: a variant at an iteration count, and how its run ended.
+struct Run
+{
+	Variant variant;
+	int iterations = 0;
+	std::unique_ptr<harness::Trial> trial;
+	bool active = true;
+	std::string status = "standing";
+	double stopSeconds = -1;   // simulated time when it stopped early (-1: ran the full duration)
+	double wallSeconds = 0;    // time spent stepping it (for the MLCP budget)
+	reference::Accuracy accuracy = notMeasured();
+
+	static reference::Accuracy notMeasured()
+	{
+		reference::Accuracy a;
+		a.residual = a.distance = a.referenceResidual = a.referenceMs = NAN;
+		return a;
+	}
+};
+
+/// References already solved in this scene, by problem: configurations that start from the same
+/// state (every one, at the first step) share one solve per time step.
+class ReferenceCache
+{
+public:
+	reference::Accuracy measure(const harness::ContactProblem& problem)
+	{
+		const std::vector<double> key = fingerprint(problem);
+		for (const Entry& e : m_entries)
+			if (e.key == key) return reference::measureAgainst(problem, e.solution);
+		const Clock::time_point start = Clock::now();
+		m_entries.push_back({key, reference::solve(problem)});
+		reference::Accuracy a = reference::measureAgainst(problem, m_entries.back().solution);
+		a.referenceMs = secondsSince(start) * 1e3;
+		return a;
+	}
+
+private:
+	struct Entry
+	{
+		std::vector<double> key;
+		reference::Solution solution;
+	};
+	static std::vector<double> fingerprint(const harness::ContactProblem& p)
+	{
+		std::vector<double> key{p.timeStep, double(p.rows.size()), double(p.bodies.size())};
+		for (const harness::ContactProblem::Row& r : p.rows)
+		{
+			key.push_back(r.b);
+			key.push_back(r.mu);
+			key.push_back(r.bodyA);
+			key.push_back(r.bodyB);
+			key.insert(key.end(), r.jacobianA, r.jacobianA + 6);
+			key.insert(key.end(), r.jacobianB, r.jacobianB + 6);
+		}
+		for (const harness::ContactProblem::Body& b : p.bodies)
+		{
+			key.push_back(b.invMass);
+			key.insert(key.end(), b.invInertia, b.invInertia + 9);
+		}
+		return key;
+	}
+	std::vector<Entry> m_entries;
+};
+
+void stop(Run& run, const char* status)
+{
+	run.active = false;
+	run.status = status;
+	run.stopSeconds = run.trial->simulation().time();
+}
+
+void runScene(const SceneCase& scene, const ParetoOptions& o, ResultTable& out)
+{
+	const Clock::time_point sceneStart = Clock::now();
+	std::vector<Run> runs;
+	for (const Variant& v : o.variants)
+		for (int n : o.iterations)
+		{
+			Run run;
+			run.variant = v;
+			run.iterations = n;
+			harness::SolverSpec spec = v.spec;
+			spec.iterations = n;
+			run.trial.reset(new harness::Trial(spec, scene.scene, scene.params, o.timeStepSeconds));
+			runs.push_back(std::move(run));
+		}
+	const int steps = int(o.durationSeconds / o.timeStepSeconds + 0.5);
+	ReferenceCache cache;
+	// Dantzig's pivoting is O(rows^3): on bigger scenes one step takes seconds to minutes.
+	bool mlcpOverBudget = !runs.empty() && int(runs.front().trial->bodies().size()) > o.mlcpMaxBodies;
+	for (int step = 0; step < steps; ++step)
+	{
+		for (Run& run : runs)
+		{
+			if (run.active && run.variant.isMLCP() && mlcpOverBudget) stop(run, "dnf");
+			if (!run.active) continue;
+			harness::Simulation& sim = run.trial->simulation();
+			const bool capture = o.reference && step == 0;
+			if (capture) sim.recorder().arm();
+			const Clock::time_point start = Clock::now();
+			run.trial->step();
+			const double seconds = secondsSince(start);
+			run.wallSeconds += seconds;
+			if (capture) run.accuracy = cache.measure(sim.recorder().take());
+
+			const harness::TrialSeries& s = run.trial->series();
+			if (harness::anyNonFinite(run.trial->bodies()))
+				stop(run, "nonfinite");
+			else if (s.drift.back() > o.collapseDriftMeters)
+				stop(run, "collapsed");
+			else if (run.variant.isMLCP() && (run.wallSeconds > o.mlcpBudgetSeconds || seconds > o.mlcpStepSeconds))
+			{
+				stop(run, "dnf");
+				mlcpOverBudget = true;
+			}
+		}
+	}
+
+	for (Run& run : runs)
+	{
+		const harness::TrialSummary s = run.trial->summary();
+		if (run.active && !s.standing) run.status = "moved";
+		const harness::SolverSpec& spec = run.trial->simulation().spec();
+		const std::string family = run.variant.label.substr(0, run.variant.label.find(' '));
+		out.newRow();
+		out.add("scene", scene.label);
+		out.add("bodies", double(run.trial->bodies().size()));
+		out.add("solver", run.variant.label);
+		out.add("family", family);
+		out.add("iterations", run.iterations);
+		out.add("f", run.variant.isPlugin() ? spec.weighting : NAN);
+		out.add("substeps", spec.substeps);
+		out.add("status", run.status);
+		out.add("collapse_s", s.collapseTime);
+		out.add("stop_s", run.active ? o.durationSeconds : run.stopSeconds);
+		out.add("steps", run.trial->steps());
+		const double ran = run.trial->steps() > 0 ? 1.0 : NAN;  // a run stopped before its first step measured nothing
+		out.add("max_drift_m", ran * s.maxDrift);
+		out.add("max_penetration_m", ran * s.maxPenetration);
+		out.add("ground_over_weight", ran * s.groundOverWeightLastSecond);
+		out.add("ground_error", ran * std::fabs(s.groundOverWeightLastSecond - 1));
+		out.add("ms_per_step", run.trial->steps() > 0 ? s.msPerStep : NAN);
+		out.add("residual", run.accuracy.residual);
+		out.add("distance", run.accuracy.distance);
+		out.add("reference_residual", run.accuracy.referenceResidual);
+		out.add("reference_rows", run.accuracy.rows);
+		out.add("reference_ms", run.accuracy.referenceMs);
+	}
+	std::fprintf(stderr, "pareto: %-16s %3zu runs, %6.1f s\n", scene.label.c_str(), runs.size(), secondsSince(sceneStart));
+}
+}  // namespace
+
+void runPareto(const ParetoOptions& o, ResultTable& out, std::vector<std::pair<std::string, std::string>>& notes)
+{
+	const Clock::time_point start = Clock::now();
+	for (const SceneCase& scene : o.scenes) runScene(scene, o, out);
+	std::ostringstream rules;
+	rules << "every configuration of a scene stepped in lockstep; " << o.durationSeconds << " s at " << 1 / o.timeStepSeconds
+		  << " Hz; a run stops once any body is more than " << o.collapseDriftMeters
+		  << " m from its start (status collapsed, stop_s) or turns NaN; MLCP stops as dnf once its stepping passes "
+		  << o.mlcpBudgetSeconds << " s or one step passes " << o.mlcpStepSeconds
+		  << " s (then every MLCP run of the scene: Dantzig does not use the iteration count), and is not started on scenes of more than "
+		  << o.mlcpMaxBodies << " bodies; ms_per_step over the steps run; "
+			 "residual and distance: the first step against the Eigen reference (cold start, same state for every run)";
+	notes.push_back({"rules", rules.str()});
+	notes.push_back({"pareto_seconds", std::to_string(secondsSince(start))});
+}
+}  // namespace sweep

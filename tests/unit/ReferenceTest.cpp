@@ -1,0 +1,174 @@
+// The Eigen accuracy reference (demos/reference) on problems with known solutions, captured from
+// registry scenes by the harness's recorder after one step.
+#include <harness/ContactRecorder.h>
+#include <harness/Simulation.h>
+#include <reference/ContactReference.h>
+#include <scenes/Registry.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+constexpr double kTimeStepSeconds = 1.0 / 60.0;
+constexpr double kGravity = 9.81;
+constexpr double kMassKg = 1.0;  // every box of the scenes below
+const double kWeightImpulse = kMassKg * kGravity * kTimeStepSeconds;  // N s per box and step
+
+/// One registry scene under one solver; step() captures that step's contact problem.
+struct Captured
+{
+	std::unique_ptr<harness::Simulation> sim;
+	std::unique_ptr<scenes::SceneContent> scene;
+
+	Captured(const std::string& name, const std::vector<std::pair<std::string, double>>& params, harness::SolverKind kind = harness::SolverKind::StockSI,
+			 int iterations = 10)
+	{
+		harness::SolverSpec spec;
+		spec.kind = kind;
+		spec.iterations = iterations;
+		sim.reset(new harness::Simulation(spec, kTimeStepSeconds, kGravity));
+		scene = scenes::createScene(sim->world(), name, params);
+	}
+	~Captured()
+	{
+		scene.reset();
+		sim.reset();
+	}
+	harness::ContactProblem step()
+	{
+		sim->recorder().arm();
+		sim->step();
+		return sim->recorder().take();
+	}
+};
+
+/// Sum of normal impulses per body pair, keyed by the upper body (the one that is not `lower`).
+double normalSumBetween(const harness::ContactProblem& p, const std::vector<double>& x, const btCollisionObject* a, const btCollisionObject* b)
+{
+	double sum = 0;
+	for (size_t i = 0; i < p.rows.size(); ++i)
+	{
+		const harness::ContactProblem::Row& r = p.rows[i];
+		if (r.kind != harness::ContactProblem::kNormal) continue;
+		if ((r.objectA == a && r.objectB == b) || (r.objectA == b && r.objectB == a)) sum += x[i];
+	}
+	return sum;
+}
+
+/// Friction impulse on `body` as a world vector, summed over its friction rows.
+btVector3 frictionOn(const harness::ContactProblem& p, const std::vector<double>& x, const btCollisionObject* body)
+{
+	btVector3 sum(0, 0, 0);
+	for (size_t i = 0; i < p.rows.size(); ++i)
+	{
+		const harness::ContactProblem::Row& r = p.rows[i];
+		if (r.kind != harness::ContactProblem::kFriction || (r.objectA != body && r.objectB != body)) continue;
+		const double* j = r.objectA == body ? r.jacobianA : r.jacobianB;
+		sum += btVector3(btScalar(j[0]), btScalar(j[1]), btScalar(j[2])) * btScalar(x[i]);
+	}
+	return sum;
+}
+
+/// The static ground as the recorder names it (static bodies share Bullet's fixed solver body: nullptr).
+const btCollisionObject* groundOf(const harness::ContactProblem&) { return nullptr; }
+}  // namespace
+
+TEST(ContactReference, BoxAtRestCarriesItsWeightImpulse)
+{
+	Captured run("single_box", {{"mass", kMassKg}});
+	const harness::ContactProblem p = run.step();
+	ASSERT_EQ(p.rows.size(), 12u);  // 4 points: a normal and two friction rows each
+	const reference::Solution ref = reference::solve(p);
+	ASSERT_TRUE(ref.converged);
+	EXPECT_LT(ref.residual, 1e-10);
+	const btCollisionObject* box = run.scene->dynamicBodies()[0];
+	EXPECT_NEAR(normalSumBetween(p, ref.impulse, box, groundOf(p)), kWeightImpulse, 1e-6 * kWeightImpulse);
+	for (size_t i = 0; i < p.rows.size(); ++i)
+		if (p.rows[i].kind == harness::ContactProblem::kNormal) EXPECT_GE(ref.impulse[i], 0.0) << "row " << i;
+	// Friction at single points is indeterminate (pairs may pull against each other); their sum is not.
+	EXPECT_LT(frictionOn(p, ref.impulse, box).length(), 1e-6 * kWeightImpulse);
+}
+
+TEST(ContactReference, ThreeBoxStackCarriesTheWeightAboveEachContact)
+{
+	Captured run("tower", {{"n", 3}, {"mass", kMassKg}});
+	const harness::ContactProblem p = run.step();
+	const reference::Solution ref = reference::solve(p);
+	ASSERT_TRUE(ref.converged);
+	const std::vector<btRigidBody*> boxes = run.scene->dynamicBodies();  // bottom to top
+	ASSERT_EQ(boxes.size(), 3u);
+	// Under each box: m g dt times the boxes it carries, itself included.
+	EXPECT_NEAR(normalSumBetween(p, ref.impulse, boxes[0], groundOf(p)), 3 * kWeightImpulse, 1e-6 * kWeightImpulse);
+	EXPECT_NEAR(normalSumBetween(p, ref.impulse, boxes[1], boxes[0]), 2 * kWeightImpulse, 1e-6 * kWeightImpulse);
+	EXPECT_NEAR(normalSumBetween(p, ref.impulse, boxes[2], boxes[1]), 1 * kWeightImpulse, 1e-6 * kWeightImpulse);
+}
+
+TEST(ContactReference, SlidingBoxFrictionIsMuTimesNormalAgainstTheMotion)
+{
+	const double mu = 0.5;
+	Captured run("sliding_box", {{"mu", mu}, {"v0", 5}, {"mass", kMassKg}});
+	const harness::ContactProblem p = run.step();
+	const reference::Solution ref = reference::solve(p);
+	ASSERT_TRUE(ref.converged);
+	const btCollisionObject* box = run.scene->dynamicBodies()[0];
+	const btVector3 friction = frictionOn(p, ref.impulse, box);
+	const double normal = normalSumBetween(p, ref.impulse, box, groundOf(p));
+	EXPECT_NEAR(normal, kWeightImpulse, 1e-6 * kWeightImpulse);
+	// Sliding along +x at 5 m/s: kinetic friction mu N dt, along -x.
+	EXPECT_NEAR(friction.x(), -mu * kWeightImpulse, 1e-5 * kWeightImpulse);
+	EXPECT_NEAR(friction.z(), 0.0, 1e-5 * kWeightImpulse);
+}
+
+TEST(ContactReference, MeasuresZeroForTheReferenceAndFullDistanceForNoImpulse)
+{
+	Captured run("tower", {{"n", 5}});
+	harness::ContactProblem p = run.step();
+	const reference::Solution ref = reference::solve(p);
+	ASSERT_TRUE(ref.converged);
+	for (size_t i = 0; i < p.rows.size(); ++i) p.rows[i].solverImpulse = ref.impulse[i];
+	const reference::Accuracy exact = reference::measure(p);
+	EXPECT_LT(exact.residual, 1e-9);
+	EXPECT_LT(exact.distance, 1e-6);
+	// No impulse at all: every body keeps falling; the distance is the whole reference, and each
+	// row's Jacobi projection would restore at least its own box's share (1/5 of the stack).
+	for (harness::ContactProblem::Row& r : p.rows) r.solverImpulse = 0;
+	const reference::Accuracy none = reference::measure(p);
+	EXPECT_NEAR(none.distance, 1.0, 1e-9);
+	EXPECT_GT(none.residual, 0.05);
+}
+
+TEST(ContactReference, RecordsTheStockSolverImpulsesOnTheReferenceRows)
+{
+	// A single box with many iterations: stock SI converges, so its recorded impulses solve the problem.
+	Captured run("single_box", {{"mass", kMassKg}}, harness::SolverKind::StockSI, 100);
+	for (int i = 0; i < 30; ++i) run.sim->step();  // warm started, at rest
+	const harness::ContactProblem p = run.step();
+	const std::vector<double> x = reference::solverImpulses(p);
+	const btCollisionObject* box = run.scene->dynamicBodies()[0];
+	EXPECT_NEAR(normalSumBetween(p, x, box, groundOf(p)), kWeightImpulse, 0.02 * kWeightImpulse);
+	const reference::Accuracy a = reference::measure(p);
+	EXPECT_LT(a.distance, 0.02);
+}
+
+TEST(ContactReference, PluginImpulsesMissTheWeightOfTheStack)
+{
+	// Weight feeling (README): a fixated body takes no load from above in the layer pass, so the
+	// plugin's step impulses under the bottom box carry less than the stack, and the distance to
+	// the reference is large, though every body stays at rest.
+	Captured run("tower", {{"n", 10}, {"mass", kMassKg}}, harness::SolverKind::ShockWorld, 10);
+	for (int i = 0; i < 30; ++i) run.sim->step();
+	const harness::ContactProblem p = run.step();
+	const std::vector<double> x = reference::solverImpulses(p);
+	const btCollisionObject* bottom = run.scene->dynamicBodies()[0];
+	EXPECT_LT(normalSumBetween(p, x, bottom, groundOf(p)), 0.9 * 10 * kWeightImpulse);
+	const reference::Accuracy a = reference::measure(p);
+	EXPECT_TRUE(a.referenceConverged);
+	EXPECT_GT(a.distance, 0.1);
+}
