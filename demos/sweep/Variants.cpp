@@ -31,8 +31,7 @@ std::vector<Variant> sweepVariants()
 		variant("sp f=0.1", "sp", 0.1),
 		variant("sp f=0.25", "sp", 0.25),
 		variant("sp f=0.5", "sp", 0.5),
-		// The plugin's weight-feeling mode goes here as one more line once SolverSpec has it, e.g.
-		// [](Variant v) { v.label = "sp-wf f=0.5"; v.spec.weightFeeling = true; return v; }(variant("", "sp", 0.5)),
+		variant("sp-wf f=0.5", "sp-wf", 0.5),  // weight feeling (D13)
 	};
 }
 
