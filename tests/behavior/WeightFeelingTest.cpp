@@ -126,12 +126,13 @@ TEST_P(WeightFeeling, PlankSharesAnOffCentreLoadByTheLeverRule)
 TEST_P(WeightFeeling, SeesawTipsToTheHeavySideAndRestsThere)
 {
 	// Two cubes on the heavy end: the default five topple off the tipped plank (their centre of mass
-	// is over the edge at its 14 degrees) and the light cube then tips it back, as physics says.
-	SceneRun run("seesaw", GetParam().solver, {{"stack", 2}});
+	// is over the edge at its 14 degrees) and the light cube then tips it back, as physics says; an
+	// edge 0.28 m high tips the plank by 5 degrees only, so two cubes stay on it after it lands.
+	SceneRun run("seesaw", GetParam().solver, {{"stack", 2}, {"fulcrumSize", 0.2}});
 	const btRigidBody* plank = run.named("plank");
 	run.run(6.0);
 	const double rise = plank->getWorldTransform().getBasis().getColumn(0).y();  // > 0: +x end up
-	EXPECT_GT(rise, std::sin(0.1)) << "the heavy (-x) end should be down";
+	EXPECT_GT(rise, std::sin(0.05)) << "the heavy (-x) end should be down (it rests at 5.4 degrees)";
 	EXPECT_LT(harness::kineticEnergy(run.bodies), 1e-3) << "J: the seesaw should have come to rest";
 }
 
