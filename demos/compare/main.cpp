@@ -100,16 +100,6 @@ void usage()
 				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
 }
 
-void listScenes()
-{
-	for (const scenes::SceneEntry& e : scenes::registry())
-	{
-		std::cout << e.category << "/" << e.name << ": " << e.description << "\n";
-		for (const scenes::Param& p : e.defaults)
-			std::cout << "    " << p.name << " = " << p.value << " " << p.unit << "  " << p.description << "\n";
-	}
-}
-
 Options parse(int argc, char** argv)
 {
 	Options o;
@@ -121,7 +111,7 @@ Options parse(int argc, char** argv)
 			return argv[++i];
 		};
 		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-		else if (a == "--list") { listScenes(); std::exit(0); }
+		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
 		else if (a == "--scene") o.scene = value();
 		else if (a == "--solvers") o.solvers = parseList<std::string>(value(), "solver", toString);
 		else if (a == "--iterations") o.iterations = parseList<int>(value(), "iteration", toInt);

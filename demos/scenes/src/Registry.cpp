@@ -5,6 +5,7 @@
 
 #include "SceneCatalog.h"
 
+#include <ostream>
 #include <stdexcept>
 
 namespace scenes
@@ -77,6 +78,16 @@ std::unique_ptr<SceneContent> createScene(btDiscreteDynamicsWorld& world, const 
 	catch (const std::invalid_argument& error)
 	{
 		throw std::invalid_argument("scene '" + name + "': " + error.what());
+	}
+}
+
+void printRegistry(std::ostream& out)
+{
+	for (const SceneEntry& e : registry())
+	{
+		out << e.category << "/" << e.name << ": " << e.description << "\n";
+		for (const Param& p : e.defaults)
+			out << "    " << p.name << " = " << p.value << " " << p.unit << "  " << p.description << "\n";
 	}
 }
 

@@ -105,16 +105,6 @@ void usage()
 				 "shift + left click shoots a box; space pauses, S steps, R resets, F frames the scene.\n";
 }
 
-void listScenes()
-{
-	for (const scenes::SceneEntry& e : scenes::registry())
-	{
-		std::cout << e.category << "/" << e.name << ": " << e.description << "\n";
-		for (const scenes::Param& p : e.defaults)
-			std::cout << "    " << p.name << " = " << p.value << " " << p.unit << "  " << p.description << "\n";
-	}
-}
-
 Options parse(int argc, char** argv)
 {
 	Options o;
@@ -126,7 +116,7 @@ Options parse(int argc, char** argv)
 			return argv[++i];
 		};
 		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-		else if (a == "--list") { listScenes(); std::exit(0); }
+		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
 		else if (a == "--scene") o.setup.scene = value();
 		else if (a == "--param")
 		{

@@ -8,6 +8,7 @@
 #include "scenes/Scene.h"
 
 #include <memory>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,9 @@ const SceneEntry* findScene(const std::string& name);
 
 /// Comma-separated list of all scene names, for error messages.
 std::string sceneNames();
+
+/// Every scene with its description and parameters (value, unit, meaning), one per line: --list.
+void printRegistry(std::ostream& out);
 
 /// Builds the scene `name` into `world` with its defaults, the given values replaced. Throws
 /// std::invalid_argument for an unknown scene (the message lists the valid names), an unknown parameter
