@@ -113,6 +113,13 @@ btScalar lighterWeight(const btPersistentManifold* manifold)
 	return lightest;
 }
 
+/// During a step, after the layer pass: the point's layer-pass impulse, total T minus the global
+/// share G that m_prevRHS holds (D5, D13).
+btScalar layerShare(const btManifoldPoint& cp)
+{
+	return btMax(btScalar(0), cp.m_appliedImpulse - cp.m_prevRHS);
+}
+
 /// Calls visit(row, kind) for every row of Bullet's four row pools.
 template <class Visit>
 void visitRows(btConstraintArray& contacts, btConstraintArray& frictions, btConstraintArray& rollingFrictions, btConstraintArray& joints,
@@ -435,7 +442,7 @@ void btShockPropagationConstraintSolver::solveWeightPass(const btContactSolverIn
 				for (int j = 0; j < m->getNumContacts(); ++j)
 				{
 					btManifoldPoint& cp = m->getContactPoint(j);
-					cp.m_prevRHS = btMax(btScalar(0), cp.m_appliedImpulse - cp.m_prevRHS);
+					cp.m_prevRHS = layerShare(cp);
 				}
 			}
 			continue;
@@ -526,7 +533,7 @@ void btShockPropagationConstraintSolver::prepareWeightPass(int numFreeBodies, co
 	{
 		btSolverConstraint& row = m_tmpSolverContactConstraintPool[i];
 		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
-		row.m_appliedImpulse = btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);
+		row.m_appliedImpulse = layerShare(*cp);
 	}
 }
 
@@ -625,7 +632,7 @@ void btShockPropagationConstraintSolver::withholdReactions()
 				  if (continued && kind == BT_ROW_CONTACT)
 				  {
 					  const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
-					  lambda -= btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);
+					  lambda -= layerShare(*cp);
 				  }
 				  if (lambda == btScalar(0)) return;
 				  const int nodeA = m_nodeOfSolverBody[row.m_solverBodyIdA];
@@ -978,7 +985,7 @@ btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCol
 		for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
 		{
 			btManifoldPoint* cp = static_cast<btManifoldPoint*>(m_tmpSolverContactConstraintPool[i].m_originalContactPoint);
-			cp->m_prevRHS = btMax(btScalar(0), cp->m_appliedImpulse - cp->m_prevRHS);  // U
+			cp->m_prevRHS = layerShare(*cp);  // U
 		}
 		btContactSolverInfo bulletInfo = info;
 		bulletInfo.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
@@ -1004,7 +1011,7 @@ btScalar btShockPropagationConstraintSolver::solveGroupCacheFriendlyFinish(btCol
 		if (m_pass == BT_PASS_WEIGHT)
 		{
 			const btScalar global = cp->m_prevRHS;
-			const btScalar up = btMax(btScalar(0), cp->m_appliedImpulse - global);  // where this pass started
+			const btScalar up = layerShare(*cp);  // where this pass started
 			cp->m_appliedImpulse = normal + global;  // total = layer (continued) + global share
 			cp->m_prevRHS = up;                      // U, the layer pass's warm start next step
 			cp->m_appliedImpulseLateral1 += lateral1;       // friction rows solved the change only
