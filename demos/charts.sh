@@ -23,3 +23,7 @@ wait "$first"
 nice -n 10 "$sweep" scaling --out "$results"
 nice -n 10 "$sweep" towers --out "$results"
 /usr/bin/python3 "$root/demos/charts/plot_charts.py" "$results" "$root/demos/charts/images"
+# The raw results README's readings come from, kept next to the charts.
+mkdir -p "$root/demos/charts/results"
+cp "$results"/scaling.* "$results"/towers.* "$results"/headline.txt "$root/demos/charts/results/"
+for part in "$results"/pareto-*; do cp "$part/pareto.csv" "$root/demos/charts/results/$(basename "$part").csv"; cp "$part/pareto.json" "$root/demos/charts/results/$(basename "$part").json"; done

@@ -31,7 +31,7 @@ struct ParetoOptions
 	std::vector<int> iterations = sweepIterations();
 	double durationSeconds = 10;
 	double timeStepSeconds = 1.0 / 60.0;
-	double collapseDriftMeters = 1.0;
+	double collapseDriftMeters = 0.1;  // 10x the 1 cm standard: past it a run has failed
 	double mlcpBudgetSeconds = 20;
 	double mlcpStepSeconds = 0.5;
 	int mlcpMaxBodies = 100;

@@ -6,13 +6,14 @@ namespace sweep
 {
 namespace
 {
-Variant variant(const std::string& label, const std::string& kind, double f = 0.5)
+Variant variant(const std::string& label, const std::string& kind, double f = 0.5, int maxIterations = 1 << 30)
 {
 	Variant v;
 	v.label = label;
 	std::string error;
 	if (!harness::parseSolverKind(kind, v.spec, error)) throw std::invalid_argument(error);
 	v.spec.weighting = f;
+	v.maxIterations = maxIterations;
 	return v;
 }
 }  // namespace
@@ -27,11 +28,11 @@ std::vector<Variant> sweepVariants()
 		variant("nncg", "nncg"),
 		variant("mlcp", "mlcp"),
 		variant("sp f=0", "sp", 0.0),
-		variant("sp f=0.05", "sp", 0.05),
-		variant("sp f=0.1", "sp", 0.1),
-		variant("sp f=0.25", "sp", 0.25),
+		variant("sp f=0.05", "sp", 0.05, 50),
+		variant("sp f=0.1", "sp", 0.1, 50),
+		variant("sp f=0.25", "sp", 0.25, 50),
 		variant("sp f=0.5", "sp", 0.5),
-		variant("sp-wf f=0.5", "sp-wf", 0.5),  // weight feeling (D13)
+		variant("sp-wf f=0.5", "sp-wf", 0.5, 50),  // weight feeling (D13): 100 ms a step at 200 on the round tower
 	};
 }
 
