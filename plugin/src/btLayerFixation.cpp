@@ -67,7 +67,47 @@ btScalar removedVelocity(const btSolverBody& body, const btVector3& linearAxis, 
 	}
 	return u;
 }
+/// J u of one side's current motion (linear, plus angular unless only the linear part is kept).
+btScalar sideVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, bool withAngular)
+{
+	btScalar u = linearAxis.dot(body.m_linearVelocity);
+	if (withAngular)
+	{
+		u += angularAxis.dot(body.m_angularVelocity);
+	}
+	return u;
+}
+
+/// D14 for a contact row with fixated side F and free side R: how much of F's approach speed
+/// a_F = -J_F u_F (> 0: F moves towards R) to take out of the row's velocity error
+/// (btInelasticApproach). A heavy support (w_F << w_R) keeps its speed and carries the stack; a
+/// light fixated body thrown into a heavy one (by a joint or a correction) no longer throws it at
+/// its own speed.
+btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLinear, const btVector3& fixatedAngular,
+						 const btVector3& fixatedAngularComponent, const btSolverBody& free, const btVector3& freeLinear,
+						 const btVector3& freeAngular, const btVector3& freeAngularComponent, btShockPropagationFixationMode mode)
+{
+	if (mode == BT_FIXATION_ZERO_VELOCITY || !fixated.m_originalBody || !free.m_originalBody)
+	{
+		return btScalar(0);  // at rest, or a static end: nothing to limit
+	}
+	const btScalar approach = -sideVelocity(fixated, fixatedLinear, fixatedAngular, mode == BT_FIXATION_KEEP_VELOCITY);
+	const btScalar away = sideVelocity(free, freeLinear, freeAngular, true);
+	const btScalar wF = sideInverseMass(fixated, fixatedLinear, fixatedAngular, fixatedAngularComponent);
+	const btScalar wR = sideInverseMass(free, freeLinear, freeAngular, freeAngularComponent);
+	return approach - btInelasticApproach(approach, away, wF, wR);
+}
 }  // namespace
+
+btScalar btInelasticApproach(btScalar approach, btScalar away, btScalar wFixated, btScalar wFree)
+{
+	if (!(approach > away) || !(approach > btScalar(0)) || !(wFixated + wFree > SIMD_EPSILON))
+	{
+		return approach;
+	}
+	const btScalar common = (approach * wFree + away * wFixated) / (wFixated + wFree);
+	return btMax(common, btScalar(0));
+}
 
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
 					   bool fixA, bool fixB, const btLayerFixationParams& params)
@@ -83,6 +123,15 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	const btScalar cfm = (kind == BT_ROW_CONTACT && jacOld != btScalar(0)) ? row.m_cfm / jacOld : btScalar(0);
 	// rel_vel = J_A u_A + J_B u_B enters the error with a minus sign (joints weighted by damping).
 	const btScalar weight = kind == BT_ROW_JOINT ? params.m_jointDamping : btScalar(1);
+
+	if (params.m_inelasticFixation && kind == BT_ROW_CONTACT && fixA != fixB)
+	{
+		// Before the fixated side's angular component is zeroed below: it holds W_F J_F^T.
+		error -= fixA ? inelasticExcess(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, bodyB,
+										row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, params.m_mode)
+					  : inelasticExcess(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, bodyA,
+										row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, params.m_mode);
+	}
 
 	btScalar denominator = cfm;
 	if (fixA)

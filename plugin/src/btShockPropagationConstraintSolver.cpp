@@ -658,6 +658,16 @@ btContactSolverInfo btShockPropagationConstraintSolver::makePassInfo(btPass pass
 	p.m_timeStep = timeStep;
 	p.m_numIterations = pass == BT_PASS_GLOBAL ? m_settings.m_globalIterations : pass == BT_PASS_CORRECTION ? m_settings.m_correctionIterations : m_settings.m_layerIterations;
 	p.m_erp2 = btScalar(0);  // D6: no Baumgarte in dynamics; correction() removes penetration
+	// Joint error: Bullet asks a joint row for erp * error / timeStep. Positions advance once, over
+	// the whole step, with the last pass's velocity (D3), so a pass of f dt must ask for the same
+	// velocity as a stock step, erp * error / dt: scale erp by the pass's share of the step. Else
+	// the joint removes error / f of its error per step (2x at f = 0.5; past 1, and unstable, at
+	// f > 0.8), and a light jointed body is thrown. Joints with their own stop ERP (6-dof limits)
+	// do not read m_erp and keep the sub-step's bias.
+	if (pass != BT_PASS_CORRECTION && info.m_timeStep > btScalar(0))
+	{
+		p.m_erp = info.m_erp * btMin(btScalar(1), timeStep / info.m_timeStep);
+	}
 	// The split-impulse slot of Bullet's iterations runs our correction() and its write-back
 	// moves positions by push * timeStep with full rotation.
 	p.m_splitImpulse = pass != BT_PASS_GLOBAL && pass != BT_PASS_WEIGHT;
@@ -836,12 +846,14 @@ void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, co
 	// (height k) and is fixated for this layer.
 	const int numSolverBodies = m_tmpSolverBodyPool.size();
 	m_isFixatedSolverBody.resize(numSolverBodies);
+	m_fixatedRigidBody.resize(numSolverBodies);
 	bool any = false;
 	for (int id = 0; id < numSolverBodies; ++id)
 	{
 		const btRigidBody* rb = m_tmpSolverBodyPool[id].m_originalBody;
 		const bool fixate = id >= numFreeBodies && rb && rb->getInvMass() != btScalar(0);
 		m_isFixatedSolverBody[id] = fixate;
+		m_fixatedRigidBody[id] = fixate ? rb : 0;
 		any = any || fixate;
 	}
 	if (!any)
@@ -852,6 +864,7 @@ void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, co
 	params.m_mode = m_settings.m_fixationMode;
 	params.m_sor = info.m_sor;
 	params.m_jointDamping = info.m_damping;
+	params.m_inelasticFixation = m_settings.m_inelasticFixation;
 
 	visitRows(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverContactRollingFrictionConstraintPool,
 			  m_tmpSolverNonContactConstraintPool, [&](btSolverConstraint& row, btSolverRowKind kind) {
@@ -909,6 +922,37 @@ void btShockPropagationConstraintSolver::solveGroupCacheFriendlySplitImpulseIter
 	}
 }
 
+btScalar btShockPropagationConstraintSolver::approachVelocity(const btSolverConstraint& c, const btSolverBody& a, const btSolverBody& b) const
+{
+	// J u of each end; a fixated end moves as the layer passes let it move (D1: its rotation is
+	// ignored unless the full velocity is kept; at rest in zero-velocity mode).
+	const btShockPropagationFixationMode mode = m_settings.m_fixationMode;
+	const bool fixA = c.m_solverBodyIdA < m_fixatedRigidBody.size() && m_fixatedRigidBody[c.m_solverBodyIdA];
+	const bool fixB = c.m_solverBodyIdB < m_fixatedRigidBody.size() && m_fixatedRigidBody[c.m_solverBodyIdB];
+	auto side = [mode](bool fixated, const btSolverBody& body, const btVector3& linear, const btVector3& angular) {
+		if (fixated && mode == BT_FIXATION_ZERO_VELOCITY) return btScalar(0);
+		btScalar u = linear.dot(body.m_linearVelocity);
+		if (!fixated || mode == BT_FIXATION_KEEP_VELOCITY) u += angular.dot(body.m_angularVelocity);
+		return u;
+	};
+	btScalar uA = side(fixA, a, c.m_contactNormal1, c.m_relpos1CrossNormal);
+	btScalar uB = side(fixB, b, c.m_contactNormal2, c.m_relpos2CrossNormal);
+	if (m_settings.m_inelasticFixation && fixA != fixB)
+	{
+		// D14: the fixated end pushes at most at the inelastic common velocity.
+		const btRigidBody* fixed = fixA ? m_fixatedRigidBody[c.m_solverBodyIdA] : m_fixatedRigidBody[c.m_solverBodyIdB];
+		const btVector3& linear = fixA ? c.m_contactNormal1 : c.m_contactNormal2;
+		const btVector3& angular = fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal;
+		const btScalar wFixed = fixed->getInvMass() * linear.length2() + angular.dot(fixed->getInvInertiaTensorWorld() * angular);
+		// The free end's J W J^T: the row's effective mass is sor / (w_free + cfm); cfm is 0 or tiny here.
+		const btScalar wFree = c.m_jacDiagABInv > btScalar(0) ? btScalar(1) / c.m_jacDiagABInv : btScalar(0);
+		btScalar& fixedU = fixA ? uA : uB;
+		const btScalar freeU = fixA ? uB : uA;
+		fixedU = -btInelasticApproach(-fixedU, freeU, wFixed, wFree);
+	}
+	return uA + uB;
+}
+
 void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
 {
 	// D11: at every contact that penetrates after the step, take out the velocity into it
@@ -925,8 +969,7 @@ void btShockPropagationConstraintSolver::stopApproachAtPenetratingContacts()
 		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
 		const btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
 		const btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
-		const btScalar relativeVelocity = c.m_contactNormal1.dot(a.m_linearVelocity) + c.m_relpos1CrossNormal.dot(a.m_angularVelocity) +
-										  c.m_contactNormal2.dot(b.m_linearVelocity) + c.m_relpos2CrossNormal.dot(b.m_angularVelocity);
+		const btScalar relativeVelocity = approachVelocity(c, a, b);
 		const bool penetrating = cp->getDistance() < btScalar(0);
 		const bool missed = relativeVelocity < -m_settings.m_correctionApproachSpeed;
 		c.m_rhs = (penetrating && missed) ? -relativeVelocity * c.m_jacDiagABInv : btScalar(0);

@@ -452,6 +452,7 @@ void HostileScene::eventToggleJoint()
 
 void HostileScene::eventPoison()
 {
+	if (m_params.poisonFraction <= 0) return;  // a world without poison stays without (draws nothing: other seeds unchanged)
 	const int index = randomIndex(int(m_bodies.size()));
 	const HostileBody& b = m_bodies[index];
 	if (b.isStatic || b.kinematic || b.poisoned || !b.inWorld) return;

@@ -52,7 +52,18 @@ struct btLayerFixationParams
 	btShockPropagationFixationMode m_mode = BT_FIXATION_KEEP_VELOCITY;
 	btScalar m_sor = btScalar(1);           ///< btContactSolverInfo::m_sor of the solve
 	btScalar m_jointDamping = btScalar(1);  ///< btContactSolverInfo::m_damping of the solve
+	/// D14: at a contact whose fixated end F approaches the free end R, F pushes R at most at the
+	/// common normal velocity of an inelastic collision of the two, (m_F a_F + m_R a_R) / (m_F + m_R)
+	/// with the row's effective masses, instead of at F's own speed (btShockPropagationSettings).
+	bool m_inelasticFixation = false;
 };
+
+/// D14: the speed (>= 0) at which a fixated end F that approaches a free end R at `approach`
+/// (m/s along the row, > 0 towards R) may push R, which moves away from F at `away`: the common
+/// velocity of an inelastic collision of the two, (approach w_R + away w_F) / (w_F + w_R), where
+/// w = J W J^T of each end, and never below zero (F is then held still along the row, a support).
+/// Returns `approach` unchanged when F does not catch up with R.
+btScalar btInelasticApproach(btScalar approach, btScalar away, btScalar wFixated, btScalar wFree);
 
 /// Re-derive one row for fixated sides. fixA / fixB say which ends are fixated. The bodies must
 /// still hold the data Bullet set them up with (call before btFixateSolverBody).

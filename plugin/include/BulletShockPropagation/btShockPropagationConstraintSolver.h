@@ -89,6 +89,12 @@ subject to the following restrictions:
 ///     Layers whose free bodies received nothing are skipped (the top layer always); the layer
 ///     data of the step are reused. Cost: one more pass over every loaded layer, at 40 sweeps.
 ///
+///  D14 beyond the paper: a fixated end that moves into the free end of a contact pushes it at most
+///     at the common velocity of an inelastic collision of the two (btInelasticApproach), in the
+///     layer and weight passes and in D11's approach stop; m_inelasticFixation. Joints: each
+///     pass scales Bullet's joint erp by its share of the step, so joint rows ask for
+///     erp * error / dt as in a stock step (positions advance once, D3).
+///
 /// Bad input: a body whose transform or velocity is NaN or Inf is left out of every pass (it
 /// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or
 /// holding a non-finite point are left out too. Counted in getStatistics().
@@ -188,6 +194,8 @@ private:
 	int supportOf(const btPersistentManifold* manifold) const;
 	/// D11: after a correction, no velocity into a contact that penetrates (see the .cpp).
 	void stopApproachAtPenetratingContacts();
+	/// J u of a contact row in the correction pass, fixated ends moving as D1 and D14 let them.
+	btScalar approachVelocity(const btSolverConstraint& c, const btSolverBody& a, const btSolverBody& b) const;
 	void buildGraph();
 	void solveDynamics(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void solveCorrection(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
@@ -227,6 +235,7 @@ private:
 	btAlignedObjectArray<btPersistentManifold*> m_layerManifolds;
 	btAlignedObjectArray<btTypedConstraint*> m_layerConstraints;
 	btAlignedObjectArray<char> m_isFixatedSolverBody;
+	btAlignedObjectArray<const btRigidBody*> m_fixatedRigidBody;  // per solver body: the body it was before fixation (else 0)
 	btAlignedObjectArray<btRigidBody*> m_fixatedBodies;
 
 	// Weight feeling (D13): per graph node, the impulse (linear, angular; world frame) that the

@@ -69,6 +69,13 @@ struct btShockPropagationSettings
 	/// See btShockPropagationFixationMode (D1).
 	btShockPropagationFixationMode m_fixationMode = BT_FIXATION_KEEP_LINEAR_VELOCITY;
 
+	/// D14 (beyond the paper): a fixated body that moves into a free one above it pushes it at most
+	/// at the common velocity of an inelastic collision of the two (row effective masses), not at
+	/// its own speed. A support heavier than its load is unaffected; a light body thrown into a
+	/// heavy one (by a joint pulling it, say) no longer throws the heavy one at its own speed, which
+	/// gave hostile worlds 5x the kinetic energy they started with (README, "Behaviour on bad input").
+	bool m_inelasticFixation = true;
+
 	/// A manifold is a contact-graph edge if one of its points is at most this far apart
 	/// (metres; negative = penetrating). 0.02 m is Bullet's default contact breaking threshold,
 	/// i.e. every point Bullet keeps counts (D8). Manifolds farther apart are solved in the
