@@ -17,9 +17,9 @@
 //   (c) the kinematic bodies: an inelastic push brings a body at most to the pusher's speed v_k;
 //       allowing for rotation and a second push, 1/2 m_i (2 v_k)^2 per body,
 //   (d) joints: a correction that moves a jointed body by up to one body extent e (1.1 m here)
-//       leaves a joint error that Bullet's joint ERP removes at erp e / dt_pass, where dt_pass is
-//       the shortest sub-step a joint row is solved with, min(f, 1 - f) dt (29 m/s at erp 0.2,
-//       f 0.5, 60 Hz): 1/2 m_i v_j^2 per jointed body.
+//       leaves a joint error that Bullet's joint ERP removes at erp e / dt (13 m/s at erp 0.2,
+//       60 Hz; the plugin scales the joint ERP of each pass to the pass's share of the step, so
+//       it asks for the same speed as a stock step): 1/2 m_i v_j^2 per jointed body.
 // A body moving under several of these has |v|^2 <= 2 |v_b|^2 + 2 |v_cd|^2, hence
 //   KE(healthy) <= 2 * sum_i [E0_i + m_i g (highest_i - y_i) + 1/2 m_i (2 v_k)^2 + 1/2 m_i v_j^2].
 // A poisoned body counts with what it had released when it was poisoned (it is frozen after).
@@ -30,12 +30,12 @@
 // 1e-3 kg body thrown at 1 km/s is 500 J, invisible next to a 1e6 kg body's budget).
 //
 // Count and finiteness must hold for every seed. The budget or the cap is exceeded today in
-// about 3% of seeds (1,000 seeds, float: 30 in the world mode, 31 solver-only; most by less
-// than 2x, a few run away to hundreds of m/s): mostly a light body hinged to a heavy one that a
-// correction or a layer's fixation moves (the fixated body's rotation is not seen by the layer
-// above, D1), whose joint error Bullet's ERP then removes faster than the cap allows. Known and
-// not fixed here (README, "Behaviour on bad input"); the test fails if more than
-// kMaxSeedsOverBoundPercent of the seeds exceed it, and prints the ones that do.
+// about 1.5% of seeds (1,000 seeds, float: 14 in the world mode, 16 solver-only; README,
+// "Behaviour on bad input"); the cases examined involve joints between bodies of very different
+// mass. Stock Bullet
+// exceeds the same bounds in 0.9% of the same worlds without poison (it spreads NaN when
+// poisoned), and the last test checks that the plugin does not do so much more often. The test
+// fails if more than kMaxSeedsOverBoundPercent of the seeds exceed them, and prints the ones that do.
 //
 // 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000).
 
@@ -64,7 +64,7 @@ constexpr double kGravity = 9.81;  // m/s^2, harness::Simulation's default
 constexpr int kStepsPerSeed = 120;
 constexpr int kDefaultSeeds = 100;
 constexpr int kMaxReportedFailures = 20;
-constexpr double kMaxSeedsOverBoundPercent = 5;  // measured about 3 (header comment)
+constexpr double kMaxSeedsOverBoundPercent = 3;  // measured 1.4-1.6 (header comment)
 
 int seedCount()
 {
@@ -98,14 +98,13 @@ struct Extremes
 
 /// Runs one seed; appends what went wrong to `broken` (count or finiteness) or to `overBound`
 /// (energy budget or speed cap), at most one line per seed.
-void runSeed(const harness::SolverSpec& solver, std::uint32_t seed, std::vector<std::string>& broken, std::vector<std::string>& overBound,
+void runSeed(const harness::SolverSpec& solver, const scenes::HostileParams& params, std::uint32_t seed, std::vector<std::string>& broken, std::vector<std::string>& overBound,
 			 Extremes& extremes)
 {
 	harness::Simulation sim(solver, kTimeStepSeconds, kGravity);
-	scenes::HostileScene scene(sim.world(), seed);  // destroyed before the world
+	scenes::HostileScene scene(sim.world(), seed, params);  // destroyed before the world
 	btDiscreteDynamicsWorld& world = sim.world();
-	const double f = sim.shockSolver()->getWeighting();
-	const double jointSpeed = world.getSolverInfo().m_erp * scenes::HostileScene::largestExtent() / (std::min(f, 1 - f) * kTimeStepSeconds);
+	const double jointSpeed = world.getSolverInfo().m_erp * scenes::HostileScene::largestExtent() / kTimeStepSeconds;
 	std::map<const btRigidBody*, double> highest;  // m, highest centre height seen while healthy
 	auto report = [&](std::vector<std::string>& list, int step, const std::string& what) {
 		std::ostringstream out;
@@ -166,12 +165,16 @@ void runSeed(const harness::SolverSpec& solver, std::uint32_t seed, std::vector<
 	extremes.bodiesMade += int(scene.bodies().size());
 }
 
-void runSeeds(const harness::SolverSpec& solver)
+/// Runs the seeds; checks counts and finiteness (always) and, if `boundPercent` >= 0, that at most
+/// that share of the seeds exceed the bounds. Returns how many seeds exceeded them.
+int runSeeds(const harness::SolverSpec& solver, const scenes::HostileParams& params = scenes::HostileParams(),
+			 double boundPercent = kMaxSeedsOverBoundPercent)
 {
 	const int seeds = seedCount();
 	std::vector<std::string> broken, overBound;
 	Extremes extremes;
-	for (int seed = 0; seed < seeds; ++seed) runSeed(solver, std::uint32_t(seed), broken, overBound, extremes);
+	const int first = std::getenv("BSP_FIRST") ? std::atoi(std::getenv("BSP_FIRST")) : 0;
+	for (int seed = first; seed < first + seeds; ++seed) runSeed(solver, params, std::uint32_t(seed), broken, overBound, extremes);
 	std::ostringstream log;
 	log << seeds << " seeds x " << kStepsPerSeed << " steps, " << extremes.bodiesMade << " bodies (" << extremes.poisonedBodies
 		<< " poisoned); " << overBound.size() << " seeds over the energy budget or speed cap; largest kinetic energy / budget "
@@ -181,7 +184,9 @@ void runSeeds(const harness::SolverSpec& solver)
 	::testing::Test::RecordProperty("summary", log.str());
 	for (size_t i = 0; i < broken.size() && i < size_t(kMaxReportedFailures); ++i) ADD_FAILURE() << broken[i];
 	EXPECT_EQ(broken.size(), 0u) << broken.size() << " of " << seeds << " seeds lost count or finiteness";
-	EXPECT_LE(100.0 * double(overBound.size()) / seeds, kMaxSeedsOverBoundPercent) << overBound.size() << " of " << seeds << " seeds exceeded the bounds";
+	if (boundPercent >= 0)
+		EXPECT_LE(100.0 * double(overBound.size()) / seeds, boundPercent) << overBound.size() << " of " << seeds << " seeds exceeded the bounds";
+	return int(overBound.size());
 }
 
 using spec::plugin;
@@ -195,4 +200,16 @@ TEST(HostileWorld, ShockWorldKeepsCountsAndHealthyBodiesFiniteAndBounded)
 TEST(HostileWorld, SolverOnlyKeepsCountsAndHealthyBodiesFiniteAndBounded)
 {
 	runSeeds(plugin(harness::SolverKind::ShockSolverOnly));
+}
+
+TEST(HostileWorld, WithoutPoisonThePluginExceedsTheBoundsNoMoreOftenThanStock)
+{
+	// Stock Bullet spreads NaN from poisoned bodies (it fails the finiteness check in most seeds),
+	// so the comparison runs the same worlds without poison. Stock exceeds the same bounds too
+	// (1,000 seeds: 9 stock, 11 plugin); the plugin may not do so much more often.
+	scenes::HostileParams clean;
+	clean.poisonFraction = 0;
+	const int stockOver = runSeeds(spec::stock(), clean, -1);
+	const int pluginOver = runSeeds(plugin(harness::SolverKind::ShockWorld), clean, -1);
+	EXPECT_LE(pluginOver, 2 * stockOver + seedCount() / 100) << "plugin " << pluginOver << " seeds over the bounds, stock " << stockOver;
 }
