@@ -67,17 +67,6 @@ btScalar removedVelocity(const btSolverBody& body, const btVector3& linearAxis, 
 	}
 	return u;
 }
-/// J u of one side's current motion (linear, plus angular unless only the linear part is kept).
-btScalar sideVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, bool withAngular)
-{
-	btScalar u = linearAxis.dot(body.m_linearVelocity);
-	if (withAngular)
-	{
-		u += angularAxis.dot(body.m_angularVelocity);
-	}
-	return u;
-}
-
 /// D14 for a contact row with fixated side F and free side R: how much of F's approach speed
 /// a_F = -J_F u_F (> 0: F moves towards R) to take out of the row's velocity error
 /// (btInelasticApproach). A heavy support (w_F << w_R) keeps its speed and carries the stack; a
@@ -91,13 +80,28 @@ btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLi
 	{
 		return btScalar(0);  // at rest, or a static end: nothing to limit
 	}
-	const btScalar approach = -sideVelocity(fixated, fixatedLinear, fixatedAngular, mode == BT_FIXATION_KEEP_VELOCITY);
-	const btScalar away = sideVelocity(free, freeLinear, freeAngular, true);
+	const btScalar approach = -btFixatedEndVelocity(fixated, fixatedLinear, fixatedAngular, mode);
+	const btScalar away = freeLinear.dot(free.m_linearVelocity) + freeAngular.dot(free.m_angularVelocity);
 	const btScalar wF = sideInverseMass(fixated, fixatedLinear, fixatedAngular, fixatedAngularComponent);
 	const btScalar wR = sideInverseMass(free, freeLinear, freeAngular, freeAngularComponent);
 	return approach - btInelasticApproach(approach, away, wF, wR);
 }
 }  // namespace
+
+btScalar btFixatedEndVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis,
+							  btShockPropagationFixationMode mode)
+{
+	if (mode == BT_FIXATION_ZERO_VELOCITY)
+	{
+		return btScalar(0);
+	}
+	btScalar u = linearAxis.dot(body.m_linearVelocity);
+	if (mode == BT_FIXATION_KEEP_VELOCITY)
+	{
+		u += angularAxis.dot(body.m_angularVelocity);
+	}
+	return u;
+}
 
 btScalar btInelasticApproach(btScalar approach, btScalar away, btScalar wFixated, btScalar wFree)
 {

@@ -509,7 +509,7 @@ void btShockPropagationConstraintSolver::mapFixatedSolverBodies(int layer)
 	{
 		const int node = m_layers.getFixatedBody(layer, i);
 		const int id = m_bodies[node]->getCompanionId();
-		if (id >= 0 && id < numSolverBodies && m_isFixatedSolverBody[id]) m_nodeOfSolverBody[id] = node;
+		if (id >= 0 && id < numSolverBodies && m_fixatedRigidBody[id]) m_nodeOfSolverBody[id] = node;
 	}
 }
 
@@ -845,14 +845,12 @@ void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, co
 	// first). Every other dynamic solver body was pulled in by a layer edge: it is a lower body
 	// (height k) and is fixated for this layer.
 	const int numSolverBodies = m_tmpSolverBodyPool.size();
-	m_isFixatedSolverBody.resize(numSolverBodies);
 	m_fixatedRigidBody.resize(numSolverBodies);
 	bool any = false;
 	for (int id = 0; id < numSolverBodies; ++id)
 	{
 		const btRigidBody* rb = m_tmpSolverBodyPool[id].m_originalBody;
 		const bool fixate = id >= numFreeBodies && rb && rb->getInvMass() != btScalar(0);
-		m_isFixatedSolverBody[id] = fixate;
 		m_fixatedRigidBody[id] = fixate ? rb : 0;
 		any = any || fixate;
 	}
@@ -868,8 +866,8 @@ void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, co
 
 	visitRows(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverContactRollingFrictionConstraintPool,
 			  m_tmpSolverNonContactConstraintPool, [&](btSolverConstraint& row, btSolverRowKind kind) {
-				  const bool fixA = m_isFixatedSolverBody[row.m_solverBodyIdA] != 0;
-				  const bool fixB = m_isFixatedSolverBody[row.m_solverBodyIdB] != 0;
+				  const bool fixA = m_fixatedRigidBody[row.m_solverBodyIdA] != 0;
+				  const bool fixB = m_fixatedRigidBody[row.m_solverBodyIdB] != 0;
 				  if (fixA || fixB)
 				  {
 					  btFixateSolverRow(row, kind, m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], fixA, fixB, params);
@@ -877,7 +875,7 @@ void btShockPropagationConstraintSolver::fixateLowerBodies(int numFreeBodies, co
 			  });
 	for (int id = 0; id < numSolverBodies; ++id)
 	{
-		if (m_isFixatedSolverBody[id])
+		if (m_fixatedRigidBody[id])
 		{
 			// Keep the companion id until the solve ends: Bullet looks joints' bodies up by it.
 			m_fixatedBodies.push_back(btFixateSolverBody(m_tmpSolverBodyPool[id], m_settings.m_fixationMode));
@@ -930,10 +928,7 @@ btScalar btShockPropagationConstraintSolver::approachVelocity(const btSolverCons
 	const bool fixA = c.m_solverBodyIdA < m_fixatedRigidBody.size() && m_fixatedRigidBody[c.m_solverBodyIdA];
 	const bool fixB = c.m_solverBodyIdB < m_fixatedRigidBody.size() && m_fixatedRigidBody[c.m_solverBodyIdB];
 	auto side = [mode](bool fixated, const btSolverBody& body, const btVector3& linear, const btVector3& angular) {
-		if (fixated && mode == BT_FIXATION_ZERO_VELOCITY) return btScalar(0);
-		btScalar u = linear.dot(body.m_linearVelocity);
-		if (!fixated || mode == BT_FIXATION_KEEP_VELOCITY) u += angular.dot(body.m_angularVelocity);
-		return u;
+		return fixated ? btFixatedEndVelocity(body, linear, angular, mode) : linear.dot(body.m_linearVelocity) + angular.dot(body.m_angularVelocity);
 	};
 	btScalar uA = side(fixA, a, c.m_contactNormal1, c.m_relpos1CrossNormal);
 	btScalar uB = side(fixB, b, c.m_contactNormal2, c.m_relpos2CrossNormal);

@@ -58,6 +58,11 @@ struct btLayerFixationParams
 	bool m_inelasticFixation = false;
 };
 
+/// J u of a fixated end along a row, as the layer passes let it move (D1): its linear velocity,
+/// plus its angular velocity when the full velocity is kept; 0 in zero-velocity mode.
+btScalar btFixatedEndVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis,
+							  btShockPropagationFixationMode mode);
+
 /// D14: the speed (>= 0) at which a fixated end F that approaches a free end R at `approach`
 /// (m/s along the row, > 0 towards R) may push R, which moves away from F at `away`: the common
 /// velocity of an inelastic collision of the two, (approach w_R + away w_F) / (w_F + w_R), where

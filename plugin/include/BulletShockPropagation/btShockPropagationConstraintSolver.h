@@ -234,8 +234,7 @@ private:
 	btAlignedObjectArray<btCollisionObject*> m_layerBodies;
 	btAlignedObjectArray<btPersistentManifold*> m_layerManifolds;
 	btAlignedObjectArray<btTypedConstraint*> m_layerConstraints;
-	btAlignedObjectArray<char> m_isFixatedSolverBody;
-	btAlignedObjectArray<const btRigidBody*> m_fixatedRigidBody;  // per solver body: the body it was before fixation (else 0)
+	btAlignedObjectArray<const btRigidBody*> m_fixatedRigidBody;  // per solver body of this pass: the body it was before fixation, 0 if free
 	btAlignedObjectArray<btRigidBody*> m_fixatedBodies;
 
 	// Weight feeling (D13): per graph node, the impulse (linear, angular; world frame) that the
