@@ -94,7 +94,7 @@ void stop(Run& run, const char* status)
 
 double fact(const harness::Trial& trial, const char* key, double otherwise)
 {
-	const std::map<std::string, double>& facts = const_cast<harness::Trial&>(trial).scene().facts;
+	const std::map<std::string, double>& facts = trial.scene().facts;
 	const auto it = facts.find(key);
 	return it == facts.end() ? otherwise : it->second;
 }

@@ -37,7 +37,8 @@
 // poisoned), and the last test checks that the plugin does not do so much more often. The test
 // fails if more than kMaxSeedsOverBoundPercent of the seeds exceed them, and prints the ones that do.
 //
-// 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000).
+// 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000), and
+// BSP_FIRST=<k> starts at seed k (to rerun one seed a failure printed).
 
 #include "../behavior/Fixture.h"
 

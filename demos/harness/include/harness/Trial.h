@@ -57,6 +57,7 @@ public:
 	Simulation& simulation() { return *m_sim; }
 	const Simulation& simulation() const { return *m_sim; }
 	scenes::SceneContent& scene() { return *m_scene; }
+	const scenes::SceneContent& scene() const { return *m_scene; }
 	const std::vector<btRigidBody*>& bodies() const { return m_bodies; }
 	const DriftTracker& drift() const { return *m_drift; }
 	const TrialSeries& series() const { return m_series; }
