@@ -52,7 +52,9 @@ METRICS = [
     ("max_drift_m", "max drift over 10 s (m)", 1e-8, "pareto_drift"),
     ("max_penetration_m", "max penetration over 10 s (m)", 1e-6, "pareto_penetration"),
     ("ground_error", "ground reaction error |F/W - 1| (last second)", 1e-6, "pareto_ground"),
-    ("residual", "complementarity residual, first step (relative)", 1e-6, "pareto_residual"),
+    ("residual_end", "complementarity residual, last step (relative)", 1e-6, "pareto_residual"),
+    ("distance_end", "distance from reference |x - x*|_A / |x*|_A, last step", 1e-6, "pareto_distance"),
+    ("residual", "complementarity residual, first step, cold (relative)", 1e-6, "pareto_residual_first"),
 ]
 
 
@@ -102,7 +104,7 @@ def plot_pareto(rows, out_dir):
                 series = sorted((r for r in mine if r["solver"] == solver), key=lambda r: int(r["iterations"]))
                 xs, ys, full = [], [], []
                 for r in series:
-                    x, y = num(r["ms_per_step"]), num(r[column])
+                    x, y = num(r["ms_per_step"]), num(r.get(column))
                     if math.isnan(x) or math.isnan(y):
                         continue
                     xs.append(x)

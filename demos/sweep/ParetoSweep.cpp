@@ -30,7 +30,8 @@ struct Run
 	double stopSeconds = -1;   // simulated time when it stopped early (-1: ran the full duration)
 	double wallSeconds = 0;    // time spent stepping it (for the MLCP budget)
 	int tilt = 0;              // scenes that must tip: the side of the first clear tilt (firstTilt)
-	reference::Accuracy accuracy = notMeasured();
+	reference::Accuracy accuracy = notMeasured();     // first step: cold start, same state for every run
+	reference::Accuracy endAccuracy = notMeasured();  // last step: warm started, the run's own state
 
 	static reference::Accuracy notMeasured()
 	{
@@ -143,13 +144,15 @@ void runScene(const SceneCase& scene, const ParetoOptions& o, ResultTable& out)
 			if (run.active && run.variant.isMLCP() && mlcpOverBudget) stop(run, "dnf");
 			if (!run.active) continue;
 			harness::Simulation& sim = run.trial->simulation();
-			const bool capture = o.reference && step == 0;
-			if (capture) sim.recorder().arm();
+			const bool first = o.reference && step == 0;
+			const bool last = o.reference && step == steps - 1;
+			if (first || last) sim.recorder().arm();
 			const Clock::time_point start = Clock::now();
 			run.trial->step();
 			const double seconds = secondsSince(start);
 			run.wallSeconds += seconds;
-			if (capture) run.accuracy = cache.measure(sim.recorder().take());
+			if (first) run.accuracy = cache.measure(sim.recorder().take());
+			else if (last) run.endAccuracy = reference::measure(sim.recorder().take());
 
 			if (!expectStanding && run.tilt == 0) run.tilt = firstTilt(*run.trial);
 			const harness::TrialSeries& s = run.trial->series();
@@ -196,6 +199,10 @@ void runScene(const SceneCase& scene, const ParetoOptions& o, ResultTable& out)
 		out.add("reference_residual", run.accuracy.referenceResidual);
 		out.add("reference_rows", run.accuracy.rows);
 		out.add("reference_ms", run.accuracy.referenceMs);
+		out.add("residual_end", run.endAccuracy.residual);
+		out.add("distance_end", run.endAccuracy.distance);
+		out.add("reference_residual_end", run.endAccuracy.referenceResidual);
+		out.add("reference_ms_end", run.endAccuracy.referenceMs);
 	}
 	std::fprintf(stderr, "pareto: %-16s %3zu runs, %6.1f s\n", scene.label.c_str(), runs.size(), secondsSince(sceneStart));
 }
@@ -213,7 +220,8 @@ void runPareto(const ParetoOptions& o, ResultTable& out, std::vector<std::pair<s
 		  << o.mlcpBudgetSeconds << " s or one step passes " << o.mlcpStepSeconds
 		  << " s (then every MLCP run of the scene: Dantzig does not use the iteration count), and is not started on scenes of more than "
 		  << o.mlcpMaxBodies << " bodies; ms_per_step over the steps run; "
-			 "residual and distance: the first step against the Eigen reference (cold start, same state for every run)";
+			 "residual and distance: the first step against the Eigen reference (cold start, same state for every run); "
+			 "residual_end and distance_end: the last step of a run that lasted the full duration, against a reference solved for that run's own state (warm started)";
 	notes.push_back({"rules", rules.str()});
 	notes.push_back({"pareto_seconds", std::to_string(secondsSince(start))});
 }
