@@ -92,8 +92,12 @@ def pareto_front(points):
 
 
 def plot_pareto(rows, out_dir):
-    scenes = [s for s in SCENE_TITLES if any(r["scene"] == s for r in rows)]
+    all_scenes = [s for s in SCENE_TITLES if any(r["scene"] == s for r in rows)]
     for column, ylabel, floor, name in METRICS:
+        # Only the scenes that have this measure (the warm-started reference is run on small scenes only).
+        scenes = [s for s in all_scenes if any(r["scene"] == s and not math.isnan(num(r.get(column))) for r in rows)]
+        if not scenes:
+            continue
         ncols = 2
         nrows = math.ceil(len(scenes) / ncols)
         fig, axes = plt.subplots(nrows, ncols, figsize=(12, 3.4 * nrows), squeeze=False)
