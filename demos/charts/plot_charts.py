@@ -137,6 +137,10 @@ def plot_pareto(rows, out_dir):
             ax.set_yscale("log")
             log_ticks(ax.xaxis)
             ax.tick_params(axis="x", which="minor", labelsize=7)
+            low, high = ax.get_ylim()
+            if high < 100 * low:  # under two decades: few powers of ten to label, so label 2 and 5 too
+                log_ticks(ax.yaxis)
+                ax.tick_params(axis="y", which="minor", labelsize=7)
             title = SCENE_TITLES[scene]
             if meant_to_move:
                 title += "\n(must tip: drift is its motion; hollow: did not tip)" if column == "max_drift_m" else \
