@@ -4,6 +4,7 @@
 #include "SeedStudies.h"
 
 #include <BulletShockPropagation/btShockPropagationCommon.h>
+#include <harness/CommandLine.h>
 #include <harness/Trial.h>
 #include <scenes/Registry.h>
 
@@ -14,6 +15,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,38 +47,6 @@ struct Options
 	std::exit(2);
 }
 
-template <class T>
-std::vector<T> parseList(const std::string& text, const char* what, T (*convert)(const std::string&))
-{
-	std::vector<T> out;
-	std::stringstream in(text);
-	std::string item;
-	while (std::getline(in, item, ','))
-	{
-		if (item.empty()) fail(std::string("empty entry in ") + what + " list '" + text + "'");
-		out.push_back(convert(item));
-	}
-	if (out.empty()) fail(std::string("empty ") + what + " list");
-	return out;
-}
-
-double toDouble(const std::string& s)
-{
-	char* end = nullptr;
-	const double v = std::strtod(s.c_str(), &end);
-	if (s.empty() || *end != '\0' || !std::isfinite(v)) fail("not a number: '" + s + "'");
-	return v;
-}
-
-int toInt(const std::string& s)
-{
-	const double v = toDouble(s);
-	if (v != std::floor(v)) fail("not an integer: '" + s + "'");
-	return int(v);
-}
-
-std::string toString(const std::string& s) { return s; }
-
 void usage()
 {
 	std::cout << "usage: bsp_demo [options]\n"
@@ -100,7 +70,7 @@ void usage()
 				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
 }
 
-Options parse(int argc, char** argv)
+Options parseArguments(int argc, char** argv)
 {
 	Options o;
 	for (int i = 1; i < argc; ++i)
@@ -113,29 +83,23 @@ Options parse(int argc, char** argv)
 		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
 		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
 		else if (a == "--scene") o.scene = value();
-		else if (a == "--solvers") o.solvers = parseList<std::string>(value(), "solver", toString);
-		else if (a == "--iterations") o.iterations = parseList<int>(value(), "iteration", toInt);
-		else if (a == "--f") o.weightings = parseList<double>(value(), "f", toDouble);
-		else if (a == "--duration") o.duration = toDouble(value());
-		else if (a == "--dt") o.timeStep = toDouble(value());
-		else if (a == "--param")
-		{
-			const std::string kv = value();
-			const auto eq = kv.find('=');
-			if (eq == std::string::npos) fail("--param wants NAME=VALUE, got '" + kv + "'");
-			o.params.push_back({kv.substr(0, eq), toDouble(kv.substr(eq + 1))});
-		}
+		else if (a == "--solvers") o.solvers = harness::splitList(value(), "solver");
+		else if (a == "--iterations") o.iterations = harness::parseIntegerList(value(), "iteration");
+		else if (a == "--f") o.weightings = harness::parseNumberList(value(), "f");
+		else if (a == "--duration") o.duration = harness::parseNumber(value());
+		else if (a == "--dt") o.timeStep = harness::parseNumber(value());
+		else if (a == "--param") o.params.push_back(harness::parseSceneParam(value()));
 		else if (a == "--csv") o.csvPath = value();
 		else if (a == "--json") o.jsonPath = value();
 		else if (a == "--no-progress") o.progress = false;
 		else if (a == "--seed") o.seed = true;
 		else if (a == "--global-correction") o.globalSecondCorrection = true;
-		else if (a == "--slop") o.slops = parseList<double>(value(), "slop", toDouble);
+		else if (a == "--slop") o.slops = harness::parseNumberList(value(), "slop");
 		else if (a == "--bfs-layers") o.supportOrdering = false;
 		else if (a == "--no-stop-approach") o.stopApproach = false;
 		else if (a == "--weight-sweeps")
 		{
-			const std::vector<int> n = parseList<int>(value(), "weight-sweeps", toInt);
+			const std::vector<int> n = harness::parseIntegerList(value(), "weight-sweeps");
 			if (n.size() != 1 || n[0] < 1) fail("--weight-sweeps wants one count >= 1");
 			o.weightSweeps = n[0];
 		}
@@ -165,6 +129,18 @@ Options parse(int argc, char** argv)
 		if (!probe) fail("cannot write output file '" + path + "'");
 	}
 	return o;
+}
+
+Options parse(int argc, char** argv)
+{
+	try
+	{
+		return parseArguments(argc, argv);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		fail(e.what());
+	}
 }
 
 std::vector<harness::SolverSpec> expand(const Options& o)

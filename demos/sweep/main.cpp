@@ -5,6 +5,8 @@
 // Writes DIR/<study>.csv and DIR/<study>.json. Exit code 2 on bad arguments.
 #include "Studies.h"
 
+#include <harness/CommandLine.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,39 +25,19 @@ namespace
 	std::exit(2);
 }
 
-std::vector<std::string> split(const std::string& text)
+/// A whole number from 1 to 1e6.
+int positiveInt(const std::string& text)
 {
-	std::vector<std::string> items;
-	std::stringstream in(text);
-	std::string item;
-	while (std::getline(in, item, ','))
-	{
-		if (item.empty()) fail("empty entry in list '" + text + "'");
-		items.push_back(item);
-	}
-	if (items.empty()) fail("empty list");
-	return items;
-}
-
-double number(const std::string& s)
-{
-	char* end = nullptr;
-	const double v = std::strtod(s.c_str(), &end);
-	if (s.empty() || *end != '\0' || !std::isfinite(v)) fail("not a number: '" + s + "'");
+	const int v = harness::parseInteger(text);
+	if (v < 1 || v > 1000000) fail("not a positive integer (1..1e6): '" + text + "'");
 	return v;
 }
 
-int positiveInt(const std::string& s)
-{
-	const double v = number(s);
-	if (v != std::floor(v) || v < 1 || v > 1e6) fail("not a positive integer: '" + s + "'");
-	return int(v);
-}
-
-std::vector<int> intList(const std::string& s)
+/// Comma-separated whole numbers from 1 to 1e6.
+std::vector<int> positiveList(const std::string& text, const std::string& what)
 {
 	std::vector<int> out;
-	for (const std::string& item : split(s)) out.push_back(positiveInt(item));
+	for (const std::string& item : harness::splitList(text, what)) out.push_back(positiveInt(item));
 	return out;
 }
 }  // namespace
@@ -81,7 +63,7 @@ int main(int argc, char** argv)
 			if (a == "--out") outDir = value();
 			else if (a == "--scenes")
 			{
-				const std::vector<std::string> wanted = split(value());
+				const std::vector<std::string> wanted = harness::splitList(value(), "scene");
 				std::vector<sweep::SceneCase> chosen;
 				for (const std::string& w : wanted)
 				{
@@ -95,16 +77,16 @@ int main(int argc, char** argv)
 			else if (a == "--solvers")
 			{
 				pareto.variants.clear();
-				const std::vector<std::string> labels = split(value());
+				const std::vector<std::string> labels = harness::splitList(value(), "solver");
 				for (const std::string& l : labels) pareto.variants.push_back(sweep::findVariant(l));
 				towers.variants = scaling.variants = labels;
 			}
-			else if (a == "--iterations") pareto.iterations = intList(value());
-			else if (a == "--duration") pareto.durationSeconds = towers.durationSeconds = number(value());
+			else if (a == "--iterations") pareto.iterations = positiveList(value(), "iteration");
+			else if (a == "--duration") pareto.durationSeconds = towers.durationSeconds = harness::parseNumber(value());
 			else if (a == "--no-reference") pareto.reference = false;
-			else if (a == "--heights") towers.heights = intList(value());
+			else if (a == "--heights") towers.heights = positiveList(value(), "height");
 			else if (a == "--max-iterations") towers.maxIterations = positiveInt(value());
-			else if (a == "--bases") scaling.bases = intList(value());
+			else if (a == "--bases") scaling.bases = positiveList(value(), "base");
 			else if (a == "--steps") scaling.measuredSteps = positiveInt(value());
 			else fail("unknown option '" + a + "'");
 		}

@@ -8,6 +8,7 @@
 #include "viewer/Renderer.h"
 
 #include <BulletShockPropagation/btShockPropagationSettings.h>
+#include <harness/CommandLine.h>
 #include <scenes/Registry.h>
 
 #include <cmath>
@@ -46,35 +47,6 @@ struct Options
 	std::exit(2);
 }
 
-double toDouble(const std::string& s)
-{
-	char* end = nullptr;
-	const double v = std::strtod(s.c_str(), &end);
-	if (s.empty() || *end != '\0' || !std::isfinite(v)) fail("not a number: '" + s + "'");
-	return v;
-}
-
-int toInt(const std::string& s)
-{
-	const double v = toDouble(s);
-	if (v != std::floor(v) || std::fabs(v) > 1e9) fail("not an integer: '" + s + "'");
-	return int(v);
-}
-
-std::vector<std::string> split(const std::string& text, const char* what)
-{
-	std::vector<std::string> out;
-	std::stringstream in(text);
-	std::string item;
-	while (std::getline(in, item, ','))
-	{
-		if (item.empty()) fail(std::string("empty entry in ") + what + " list '" + text + "'");
-		out.push_back(item);
-	}
-	if (out.empty()) fail(std::string("empty ") + what + " list");
-	return out;
-}
-
 void usage()
 {
 	std::cout << "usage: bsp_viewer [options]\n"
@@ -105,7 +77,7 @@ void usage()
 				 "shift + left click shoots a box; space pauses, S steps, R resets, F frames the scene.\n";
 }
 
-Options parse(int argc, char** argv)
+Options parseArguments(int argc, char** argv)
 {
 	Options o;
 	for (int i = 1; i < argc; ++i)
@@ -118,21 +90,12 @@ Options parse(int argc, char** argv)
 		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
 		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
 		else if (a == "--scene") o.setup.scene = value();
-		else if (a == "--param")
-		{
-			const std::string kv = value();
-			const auto eq = kv.find('=');
-			if (eq == std::string::npos) fail("--param wants NAME=VALUE, got '" + kv + "'");
-			o.setup.params.push_back({kv.substr(0, eq), toDouble(kv.substr(eq + 1))});
-		}
-		else if (a == "--solvers") o.solvers = split(value(), "solver");
+		else if (a == "--param") o.setup.params.push_back(harness::parseSceneParam(value()));
+		else if (a == "--solvers") o.solvers = harness::splitList(value(), "solver");
 		else if (a == "--iterations")
-		{
-			o.iterations.clear();
-			for (const std::string& s : split(value(), "iteration")) o.iterations.push_back(toInt(s));
-		}
-		else if (a == "--f") o.weighting = toDouble(value());
-		else if (a == "--dt") o.setup.timeStep = toDouble(value());
+			o.iterations = harness::parseIntegerList(value(), "iteration");
+		else if (a == "--f") o.weighting = harness::parseNumber(value());
+		else if (a == "--dt") o.setup.timeStep = harness::parseNumber(value());
 		else if (a == "--colour" || a == "--color")
 		{
 			const std::string mode = value();
@@ -147,24 +110,18 @@ Options parse(int argc, char** argv)
 		else if (a == "--out") o.out = value();
 		else if (a == "--palette") o.palette = true;
 		else if (a == "--times")
-		{
-			o.times.clear();
-			for (const std::string& s : split(value(), "time")) o.times.push_back(toDouble(s));
-		}
+			o.times = harness::parseNumberList(value(), "time");
 		else if (a == "--frames")
-		{
-			o.frames.clear();
-			for (const std::string& s : split(value(), "frame")) o.frames.push_back(toInt(s));
-		}
-		else if (a == "--yaw") o.camera.yaw = toDouble(value()) * M_PI / 180;
+			o.frames = harness::parseIntegerList(value(), "frame");
+		else if (a == "--yaw") o.camera.yaw = harness::parseNumber(value()) * M_PI / 180;
 		else if (a == "--pitch")
 		{
-			o.camera.pitch = toDouble(value()) * M_PI / 180;
+			o.camera.pitch = harness::parseNumber(value()) * M_PI / 180;
 			if (!(std::fabs(o.camera.pitch) <= 85 * M_PI / 180)) fail("--pitch must be within -85..85 degrees");
 		}
 		else if (a == "--frame-at")
 		{
-			o.frameTime = toDouble(value());
+			o.frameTime = harness::parseNumber(value());
 			if (!(o.frameTime >= 0 && o.frameTime <= 3600)) fail("--frame-at must be in [0, 3600] seconds");
 		}
 		else if (a == "--size")
@@ -172,8 +129,8 @@ Options parse(int argc, char** argv)
 			const std::string size = value();
 			const auto x = size.find('x');
 			if (x == std::string::npos) fail("--size wants WxH, e.g. 320x240, got '" + size + "'");
-			o.cellWidth = toInt(size.substr(0, x));
-			o.cellHeight = toInt(size.substr(x + 1));
+			o.cellWidth = harness::parseInteger(size.substr(0, x));
+			o.cellHeight = harness::parseInteger(size.substr(x + 1));
 			if (o.cellWidth < 16 || o.cellHeight < 16 || o.cellWidth > 4096 || o.cellHeight > 4096)
 				fail("--size: each side must be 16..4096 pixels");
 		}
@@ -213,6 +170,18 @@ Options parse(int argc, char** argv)
 		if (!o.colourGiven) o.draw.colours = viewer::ColourMode::Plain;
 	}
 	return o;
+}
+
+Options parse(int argc, char** argv)
+{
+	try
+	{
+		return parseArguments(argc, argv);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		fail(e.what());
+	}
 }
 
 int runHeadless(const Options& o)
