@@ -8,13 +8,11 @@
 #include <harness/Trial.h>
 #include <scenes/Registry.h>
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
