@@ -14,6 +14,8 @@ subject to the following restrictions:
 
 #include "BulletShockPropagation/btContactGraph.h"
 
+#include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
+
 void btContactGraph::reset(int numBodies)
 {
 	btAssert(numBodies >= 0);
@@ -71,4 +73,35 @@ void btContactGraph::buildAdjacency()
 		if (edge.m_bodyA >= 0) m_adjacency[cursor[edge.m_bodyA]++] = e;
 		if (edge.m_bodyB >= 0 && edge.m_bodyB != edge.m_bodyA) m_adjacency[cursor[edge.m_bodyB]++] = e;
 	}
+}
+
+bool btContactGraph::isContactEdge(const btPersistentManifold* manifold)
+{
+	const btScalar threshold = manifold->getContactProcessingThreshold();
+	for (int j = 0; j < manifold->getNumContacts(); ++j)
+	{
+		if (manifold->getContactPoint(j).getDistance() <= threshold) return true;
+	}
+	return false;
+}
+
+int btContactGraph::supportOf(const btPersistentManifold* manifold, const btVector3& up, btScalar supportAngle)
+{
+	// m_normalWorldOnB points from body 1 to body 0: up means body 0 (A) rests on body 1 (B).
+	if (manifold->getNumContacts() == 0 || up.isZero()) return BT_SUPPORT_NONE;
+	btVector3 normal(0, 0, 0);
+	for (int j = 0; j < manifold->getNumContacts(); ++j) normal += manifold->getContactPoint(j).m_normalWorldOnB;
+	const btScalar length = normal.length();
+	if (!(length > SIMD_EPSILON)) return BT_SUPPORT_NONE;
+	const btScalar cosine = normal.dot(up) / length;
+	const btScalar threshold = btCos(supportAngle);
+	if (cosine > threshold) return BT_SUPPORT_A_ON_B;
+	if (cosine < -threshold) return BT_SUPPORT_B_ON_A;
+	return BT_SUPPORT_NONE;
+}
+
+int btContactGraph::addManifold(const btPersistentManifold* manifold, int nodeA, int nodeB, int source, const btVector3& up, btScalar supportAngle)
+{
+	if (!isContactEdge(manifold)) return -1;
+	return addEdge(nodeA, nodeB, source, supportOf(manifold, up, supportAngle));
 }

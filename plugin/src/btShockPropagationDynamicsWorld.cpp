@@ -75,54 +75,30 @@ void btShockPropagationDynamicsWorld::setConstraintSolver(btConstraintSolver* so
 
 void btShockPropagationDynamicsWorld::internalSingleStepSimulation(btScalar timeStep)
 {
+	// btDiscreteDynamicsWorld's step, with the second correction after the positions advance.
 	BT_PROFILE("btShockPropagationDynamicsWorld::internalSingleStepSimulation");
-	m_shockSolver->resetStatistics();
-	if (m_internalPreTickCallback)
-	{
-		(*m_internalPreTickCallback)(this, timeStep);
-	}
-	// Damping and predicted transforms (for CCD); gravity already sits in each body's force.
-	predictUnconstraintMotion(timeStep);
-	btDispatcherInfo& dispatchInfo = getDispatchInfo();
-	dispatchInfo.m_timeStep = timeStep;
-	dispatchInfo.m_stepCount = 0;
-	dispatchInfo.m_debugDraw = getDebugDrawer();
-	createPredictiveContacts(timeStep);
+	btDiscreteDynamicsWorld::internalSingleStepSimulation(timeStep);
+}
 
-	collisionPhase(timeStep);
-	updateActions(timeStep);
+void btShockPropagationDynamicsWorld::integrateTransforms(btScalar timeStep)
+{
+	btDiscreteDynamicsWorld::integrateTransforms(timeStep);
 	if (m_shockSolver->getSettings().m_secondCorrection)
 	{
 		correctionPhase(timeStep);
 	}
-	updateActivationState(timeStep);
-
-	if (m_internalTickCallback)
-	{
-		(*m_internalTickCallback)(this, timeStep);
-	}
-}
-
-void btShockPropagationDynamicsWorld::collisionPhase(btScalar timeStep)
-{
-	BT_PROFILE("collisionPhase");
-	performDiscreteCollisionDetection();  // CD(t)
-	calculateSimulationIslands();
-	getSolverInfo().m_timeStep = timeStep;
-	m_shockSolver->setPhase(btShockPropagationConstraintSolver::BT_PHASE_DYNAMICS);
-	solveConstraints(getSolverInfo());  // dynamics(f dt), then the layers bottom-up
-	integrateTransforms(timeStep);
 }
 
 void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
 {
+	// The paper's second correction at t + dt (D4): depths from the new transforms and the
+	// contact points' anchors, no second narrowphase (so no callbacks fire twice and islands stay
+	// as Bullet computed them).
 	BT_PROFILE("correctionPhase");
-	btClock clock;
-	performDiscreteCollisionDetection();  // CD(t + dt)
-	const double collisionMs = double(clock.getTimeMicroseconds()) * 1e-3;
-	getSolverInfo().m_timeStep = timeStep;
-	m_shockSolver->setPhase(btShockPropagationConstraintSolver::BT_PHASE_CORRECTION);
-	solveConstraints(getSolverInfo());  // correction(), every body free
-	m_shockSolver->setPhase(btShockPropagationConstraintSolver::BT_PHASE_DYNAMICS);
-	m_shockSolver->getStatisticsForWriting().m_timeCollisionMs += collisionMs;
+	btContactSolverInfo info = getSolverInfo();
+	info.m_timeStep = timeStep;
+	btCollisionObjectArray& objects = getCollisionObjectArray();
+	m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
+									m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
+									m_dispatcher1->getNumManifolds(), info);
 }

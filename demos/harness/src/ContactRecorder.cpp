@@ -22,12 +22,6 @@ void copy3(const btVector3& v, double* out)
 }
 }  // namespace
 
-bool isDynamicsSolve(const btConstraintSolver& solver)
-{
-	const btShockPropagationConstraintSolver* shock = dynamic_cast<const btShockPropagationConstraintSolver*>(&solver);
-	return !shock || shock->getPhase() == btShockPropagationConstraintSolver::BT_PHASE_DYNAMICS;
-}
-
 /// Bullet's own row setup, run on the side: exposes the pools it fills.
 class ContactRecorder::RowBuilder : public btSequentialImpulseConstraintSolver
 {

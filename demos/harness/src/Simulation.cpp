@@ -142,14 +142,11 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 	{
 		btShockPropagationSettings settings;
 		settings.m_weighting = btScalar(spec.weighting);
-		settings.m_globalIterations = spec.iterations;
-		settings.m_layerIterations = spec.iterations;
-		settings.m_correctionIterations = spec.iterations;
+		// Sweep counts follow the world's m_numIterations (set below), as in an app.
 		if (spec.fixationMode >= 0) settings.m_fixationMode = btShockPropagationFixationMode(spec.fixationMode);
 		settings.m_layeredSecondCorrection = !spec.globalSecondCorrection;
 		if (spec.correctionSlop >= 0) settings.m_correctionSlop = btScalar(spec.correctionSlop);
 		settings.m_supportOrdering = spec.supportOrdering;
-		settings.m_correctionStopsApproach = spec.stopApproach;
 		settings.m_weightFeeling = spec.weightFeeling;
 		if (spec.weightIterations > 0) settings.m_weightIterations = spec.weightIterations;
 		m_shockSolver = recording<btShockPropagationConstraintSolver>(&m_recorder, settings);

@@ -16,6 +16,10 @@ subject to the following restrictions:
 #define BT_SHOCK_PROPAGATION_CONTACT_GRAPH_H
 
 #include "LinearMath/btAlignedObjectArray.h"
+#include "LinearMath/btScalar.h"
+#include "LinearMath/btVector3.h"
+
+class btPersistentManifold;
 
 /// The contact graph of one solveGroup call (Erleben 2007, "Contact graph"; the idea of
 /// shock propagation over a contact graph is Guendelman, Bridson and Fedkiw 2003).
@@ -27,7 +31,10 @@ subject to the following restrictions:
 /// (BT_CONTACT_GRAPH_ROOT). Several manifolds or joints between the same pair are several edges;
 /// the layering treats them alike.
 ///
-/// Pure data: no Bullet objects, so graph code is tested on hand-built inputs (tests/unit).
+/// The graph itself is pure data (edges between node indices), so graph code is tested on
+/// hand-built inputs (tests/unit); addManifold is the one place where a Bullet manifold becomes
+/// an edge (the edge rule, D8, and the support direction, D12), used by the solver and timed by
+/// demos/bench.
 /// Internal part of btShockPropagationConstraintSolver; public so it can be tested and reused.
 enum
 {
@@ -61,6 +68,21 @@ public:
 	/// `support` says which end rests on the other (btContactSupport). Returns the edge index,
 	/// or -1 if ignored.
 	int addEdge(int bodyA, int bodyB, int source, int support = BT_SUPPORT_NONE);
+
+	/// The edge rule (D8): a manifold is an edge if it holds a point Bullet makes a solver row of
+	/// (distance within the manifold's contact processing threshold), so every contact row of a
+	/// step lies in exactly one layer. Bullet keeps points up to its contact breaking threshold,
+	/// which scales with the shapes (relative breaking threshold), and speculative (CCD) points.
+	static bool isContactEdge(const btPersistentManifold* manifold);
+
+	/// Which body of the manifold rests on the other (btContactSupport): the mean contact normal
+	/// against `up` (unit vector, -gravity / |g|), within supportAngle (radians) of vertical.
+	static int supportOf(const btPersistentManifold* manifold, const btVector3& up, btScalar supportAngle);
+
+	/// addEdge for a manifold that passes isContactEdge (nodeA / nodeB: its bodies' node indices
+	/// or BT_CONTACT_GRAPH_ROOT). up: unit up vector, or zero for no support ordering. Returns the
+	/// edge index, or -1 if the manifold is no edge.
+	int addManifold(const btPersistentManifold* manifold, int nodeA, int nodeB, int source, const btVector3& up, btScalar supportAngle);
 
 	/// Build the adjacency lists (call after the last addEdge, before queries below).
 	void buildAdjacency();

@@ -23,7 +23,6 @@ subject to the following restrictions:
 ///     btShockPropagationDynamicsWorld world(dispatcher, broadphase, nullptr, configuration);
 
 #include "btContactGraph.h"
-#include "btLayerFixation.h"
 #include "btShockPropagationConstraintSolver.h"
 #include "btShockPropagationDynamicsWorld.h"
 #include "btShockPropagationSettings.h"

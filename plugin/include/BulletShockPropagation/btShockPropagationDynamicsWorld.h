@@ -22,17 +22,15 @@ class btShockPropagationConstraintSolver;
 
 /// A btDiscreteDynamicsWorld that runs Erleben's full time step (ACM TOG 2007, "final algorithm"):
 ///
-///   phase           what runs                                                      Bullet call
-///   collision       CD(t), islands                                                 performDiscreteCollisionDetection
-///                   dynamics(f dt); per layer {correction, dynamics((1-f) dt)}     solveConstraints (solver phase DYNAMICS)
-///                   positions advance with the final velocity                      integrateTransforms
-///   correction      CD(t + dt)                                                     performDiscreteCollisionDetection
-///                   correction() of every contact, all bodies free ("anti-rippling")  solveConstraints (solver phase CORRECTION)
+///   what runs                                                     Bullet call
+///   CD(t), islands                                                performDiscreteCollisionDetection
+///   global pass, layers bottom-up, position correction at CD(t)   solveConstraints (solver's solveGroup)
+///   positions advance with the final velocity                     integrateTransforms
+///   second correction at t + dt ("anti-rippling")                 after integrateTransforms
 ///
-/// Gravity is applied exactly once per step: stepSimulation adds it to each body's total force
-/// once, and the global and layer passes turn it into impulses of f dt and (1 - f) dt.
-/// Like btDiscreteDynamicsWorldMt, it behaves as btDiscreteDynamicsWorld otherwise: same
-/// constructor, same API, same callbacks (pre-tick, tick), same sleeping rules.
+/// Everything else is btDiscreteDynamicsWorld's own step (predictive contacts, actions, sleeping,
+/// callbacks), unchanged. The second correction recomputes each contact point's depth from the
+/// new transforms, as Bullet's refreshContactPoints does, without changing the manifolds (D4).
 ATTRIBUTE_ALIGNED16(class)
 btShockPropagationDynamicsWorld : public btDiscreteDynamicsWorld
 {
@@ -55,10 +53,10 @@ public:
 
 protected:
 	virtual void internalSingleStepSimulation(btScalar timeStep) BT_OVERRIDE;
+	/// Bullet's integration, then the second correction (m_secondCorrection).
+	virtual void integrateTransforms(btScalar timeStep) BT_OVERRIDE;
 
-	/// CD(t), dynamics of the shock-propagation solver, position update.
-	void collisionPhase(btScalar timeStep);
-	/// CD(t + dt) and the global position correction.
+	/// The second correction at t + dt.
 	void correctionPhase(btScalar timeStep);
 
 private:

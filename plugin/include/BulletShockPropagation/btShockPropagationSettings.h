@@ -17,122 +17,129 @@ subject to the following restrictions:
 
 #include "LinearMath/btScalar.h"
 
+/// Iteration counts that follow the app: a sweep count set to this takes the world's
+/// btContactSolverInfo::m_numIterations at each step (see btShockPropagationSettings).
+enum
+{
+	BT_SHOCK_ITERATIONS_FROM_WORLD = -1
+};
+
 /// What a fixated (infinite-mass) body looks like to the layer above it (decision D1).
-/// Measured (README, "Fixation mode"): on a 200-brick wall, full kept velocity lets the
-/// small angular velocity PGS leaves in each layer grow from layer to layer (an upper body
-/// resting on a slightly rotating support is pushed up by the rising side and never pulled by
-/// the sinking side), so the default keeps the linear velocity only.
 enum btShockPropagationFixationMode
 {
-	/// Infinite mass, linear and angular velocity kept: upper bodies come to rest relative to the
-	/// lower one's full rigid motion.
+	/// Infinite mass, full rigid motion kept (linear and angular velocity, including what the
+	/// layers below gave it this step): upper bodies come to rest relative to the lower one's
+	/// motion, so a stack on a turntable turns with it and a chain swings. Default.
 	BT_FIXATION_KEEP_VELOCITY = 0,
 	/// Infinite mass and zero velocity, as in Erleben's OpenTissue code (set_fixed).
 	BT_FIXATION_ZERO_VELOCITY = 1,
-	/// Infinite mass, linear velocity kept, angular velocity treated as zero: a stack on a sliding
-	/// or carried support still moves with it, and rotation noise does not climb the stack. Default.
+	/// Infinite mass, linear velocity kept, angular velocity treated as zero (the default before
+	/// the one-setup step; kept to reproduce the measurements in docs/design.md, D1).
 	BT_FIXATION_KEEP_LINEAR_VELOCITY = 2
 };
 
 /// Every tunable of the plugin, with its default, unit and reason. Defaults are set here only.
-/// Bullet's own btContactSolverInfo still supplies friction/restitution thresholds, warm-starting
-/// factor, SOR and joint ERP; its m_numIterations, m_erp2 and split-impulse fields are replaced by
-/// the fields below while the plugin solves.
+///
+/// What comes from the app (btContactSolverInfo of the world, read at every step): the time
+/// step, m_numIterations (the sweep counts below follow it by default), the residual threshold
+/// (ends the global pass early), warm starting and its factor, SOR, joint ERP/CFM, restitution
+/// and friction settings, m_solverMode. Bullet's rows are set up once per step with the app's
+/// time step exactly as a stock step sets them up, and finished once (D15). Replaced while the
+/// plugin solves a stacked group: Baumgarte on contacts (m_erp2) and split impulse, by the
+/// position correction (D6). Groups without stacks are solved by Bullet's own solver, unchanged.
 struct btShockPropagationSettings
 {
-	/// Weighting value f in [0, 1] (unitless): the fraction of the time step integrated by the
-	/// global pass with every body free, dynamics(f dt); the layered pass integrates (1 - f) dt.
-	/// Larger f passes more weight down the stack ("weight feeling"); the corrections keep the
-	/// unconverged global solve from sagging. Measured (README): 0.5 holds the 200-brick wall with
-	/// overhanging end bricks (they need the weight of the rows above); 0.1 and 0.25 lose it (D2).
-	/// f = 0 skips the global pass (OpenTissue would run an impulse-only pass there).
+	/// Weighting value f in [0, 1] (unitless): the share of the app's sweeps spent on the global
+	/// pass, where every body is free, before the layers are solved bottom-up with the lower
+	/// bodies fixated. The global pass lets the lower bodies feel the weight of the upper ones;
+	/// the layered pass makes the stack rigid. f = 0 skips the global pass (Erleben's classic
+	/// method, the paper's f). Default 0.5 (D2, measured in docs/design.md).
 	btScalar m_weighting = btScalar(0.5);
 
-	/// PGS sweeps of the global pass dynamics(f dt) (count). 10 as in OpenTissue (D7).
-	int m_globalIterations = 10;
-	/// PGS sweeps of each layer's dynamics((1 - f) dt) (count). A layer is a short problem
-	/// (one contact deep), so 10 sweeps converge it where a whole stack would need O(n^2) (D7).
-	int m_layerIterations = 10;
-	/// PGS sweeps of each position correction, per layer and in the second correction (count).
-	int m_correctionIterations = 10;
+	/// PGS sweeps of the global pass (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default):
+	/// ceil(f * m_numIterations) of the world's solver info, at least 1 when f > 0 (D7).
+	int m_globalIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+	/// PGS sweeps of each layer (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's
+	/// m_numIterations. A layer is one contact deep, so its sweeps converge it where a whole
+	/// stack would need O(n^2); each row is in one layer, so the layered pass costs about one
+	/// stock solve (D7).
+	int m_layerIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+	/// Projected Gauss-Seidel sweeps of each position correction (count).
+	/// BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's m_numIterations.
+	int m_correctionIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
 
-	/// Run collision detection again at t + dt and a global position correction with every
-	/// body free ("anti-rippling", the paper's fix for ripples; needs btShockPropagationDynamicsWorld).
+	/// World mode: after the positions advance, correct the penetration of the step's contacts
+	/// again, at their depths at t + dt ("anti-rippling", the paper's second correction). Depths
+	/// are recomputed from the bodies' new transforms and the contact points' local anchors (as
+	/// Bullet's refreshContactPoints does), without a second narrowphase (D4).
 	bool m_secondCorrection = true;
 
-	/// Solve the second correction layer by layer (bottom-up, lower bodies fixated) on the contact
-	/// graph of CD(t + dt), instead of as one global mass-weighted projection with every body free.
-	/// The global form is the paper's; with 10 sweeps it does not converge on mass ratios (a
-	/// 1000:1 tower is squeezed apart), so the layered form is the default (measured, README).
+	/// Solve the second correction layer by layer (bottom-up, lower bodies fixated) instead of as
+	/// one global projection with every body free (the paper's form, which squeezes mass-ratio
+	/// stacks apart at 10 sweeps; D4).
 	bool m_layeredSecondCorrection = true;
 
 	/// See btShockPropagationFixationMode (D1).
-	btShockPropagationFixationMode m_fixationMode = BT_FIXATION_KEEP_LINEAR_VELOCITY;
+	btShockPropagationFixationMode m_fixationMode = BT_FIXATION_KEEP_VELOCITY;
 
-	/// D14 (beyond the paper): a fixated body that moves into a free one above it pushes it at most
-	/// at the common velocity of an inelastic collision of the two (row effective masses), not at
-	/// its own speed. A support heavier than its load is unaffected; a light body thrown into a
-	/// heavy one (by a joint pulling it, say) no longer throws the heavy one at its own speed, which
-	/// gave hostile worlds 5x the kinetic energy they started with (README, "Behaviour on bad input").
-	bool m_inelasticFixation = true;
+	/// Unused since the one-setup step (D14 is gone: a fixated body moves with its real, solved
+	/// velocity). Kept so code built against earlier releases compiles.
+	bool m_inelasticFixation = false;
 
-	/// A manifold is a contact-graph edge if one of its points is at most this far apart
-	/// (metres; negative = penetrating). 0.02 m is Bullet's default contact breaking threshold,
-	/// i.e. every point Bullet keeps counts (D8). Manifolds farther apart are solved in the
-	/// global pass and corrections only.
+	/// Unused since the one-setup step: the contact graph takes every manifold point Bullet
+	/// makes a row of (D8, btContactGraph::isContactEdge). Kept so earlier code compiles.
 	btScalar m_graphContactThreshold = btScalar(0.02);
 
 	/// Fraction (unitless, 0..1] of each measured penetration removed by a correction. 1 removes
 	/// all of it, as OpenTissue's correction() does (erp = 1).
 	btScalar m_correctionFraction = btScalar(1);
 
-	/// Penetration left in place by corrections (metres). 0 is OpenTissue's choice; in Bullet it
-	/// leaves resting boxes at zero distance, where the box-box test may report no contact, so the
-	/// next step sees a gap and the body falls into it again. 0.5 mm keeps resting contacts alive
-	/// (measured, README "Choices measured": tower of 40 0.16 -> 0.00 cm, round tower 0.74 -> 0.04 cm).
-	btScalar m_correctionSlop = btScalar(0.0005);
+	/// Penetration left in place by corrections (metres). Negative (default): scaled from the
+	/// world, m_correctionSlopPerFall * |g| dt^2 (0.5 mm at 9.81 m/s^2 and 60 Hz). 0 is
+	/// OpenTissue's choice; in Bullet it leaves resting boxes at zero distance, where the box-box
+	/// test may report no contact, so the next step sees a gap and the body falls into it again.
+	btScalar m_correctionSlop = btScalar(-1);
 
-	/// Two friction rows per contact point (a four-sided friction pyramid) instead of Bullet's
-	/// default one velocity-aligned row. Bullet's single row lets towers creep sideways
-	/// (bullet-notes.md); a layer is small, so the second row is cheap.
+	/// The derived slop as a share of the distance a body falls from rest in one step, |g| dt^2
+	/// (unitless). 0.18 gives the 0.5 mm measured at 60 Hz (docs/design.md, D6), and scales with
+	/// the world's units and rate.
+	btScalar m_correctionSlopPerFall = btScalar(0.18);
+
+	/// Two friction rows per contact point (a four-sided friction pyramid) in stacked groups,
+	/// instead of Bullet's default one velocity-aligned row. Bullet's single row lets towers creep
+	/// sideways (docs/design.md, D7). Groups without stacks keep the app's m_solverMode.
 	bool m_twoFrictionDirections = true;
 
 	/// Layered solve also when the contact graph has a single layer (no stacks). Off: such groups
-	/// get one ordinary solve of the full step (no f split), so scenes without stacks cost what
-	/// stock Bullet costs.
+	/// are solved by Bullet's own solver with the app's settings, so scenes without stacks behave
+	/// and cost exactly as stock Bullet.
 	bool m_layerFlatGroups = false;
 
 	/// Order the stack layers by support as well as by BFS distance (btStackLayers): a body that
 	/// rests on another (mean contact normal within m_supportAngle of the up direction, up =
 	/// -gravity) is put above it. Off: Erleben's plain BFS layers, which clamp the top box of the
-	/// taller column of a door between two fixated bodies (algorithm.md 2.4 and 2.5).
+	/// taller column of a door between two fixated bodies (D12).
 	bool m_supportOrdering = true;
 
-	/// Corrections also remove the velocity into every contact that penetrates (D11, inelastic,
-	/// normal direction only). Without it a body the correction has pushed out to zero distance
-	/// can lose its contact (Bullet's box-box test reports none at zero distance) and gain g dt
-	/// of velocity into the ground every step while the correction keeps moving it back.
-	bool m_correctionStopsApproach = true;
+	/// Unused since the one-setup step (D11 is gone: speculative contacts are set up with the
+	/// step's own time step, so the dynamics no longer misses contacts it must stop at).
+	bool m_correctionStopsApproach = false;
 
-	/// Approach speed (m/s) above which a penetrating contact counts as missed by the dynamics
-	/// phase and gets its approach velocity removed (m_correctionStopsApproach). Resting contacts
-	/// approach far slower; projecting them too (normal rows without friction) would spin the
-	/// bodies of a stack. 0.25 m/s is 1.5 g dt at 60 Hz.
+	/// Unused since the one-setup step (D11). Kept so earlier code compiles (m/s).
 	btScalar m_correctionApproachSpeed = btScalar(0.25);
 
 	/// Largest angle (radians) between a contact normal and the up direction for which the
 	/// contact counts as support; steeper contacts are side contacts. 1.0472 = 60 degrees.
 	btScalar m_supportAngle = btScalar(1.0471975511965976);
 
-	/// Weight feeling (D13, beyond the paper; in the spirit of Xiong et al., "Two-Pass Shock
-	/// Propagation", SCA 2025): after the bottom-up layer pass, a top-down pass hands each layer's
-	/// reaction impulses, which fixation withheld from the bodies below, to those bodies and
-	/// re-solves their layer, so the ground carries the whole stack and loads tip what they rest on.
+	/// Weight feeling (D13, in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
+	/// 2025): after the bottom-up layer pass, a top-down pass hands each layer's impulses, which
+	/// fixation withheld from the bodies below, to those bodies and re-solves their layer, so the
+	/// ground carries the whole stack and loads tip what they rest on.
 	bool m_weightFeeling = false;
 
 	/// PGS sweeps of each layer's re-solve in the weight pass (count). The load handed down has
-	/// to be carried within the step: at 10 sweeps a 20-row pyramid and the wall fall, at 20 the
-	/// wall still loses its weight feeling, 40 hold both (README, D13).
+	/// to be carried within the step: 40 hold the wall and the pyramid (D13).
 	int m_weightIterations = 40;
 };
 

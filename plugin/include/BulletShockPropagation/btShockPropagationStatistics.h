@@ -26,16 +26,16 @@ struct btShockPropagationStatistics
 	int m_numLayeredGroups = 0;   ///< groups solved layer by layer (the others had no stacks)
 	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (see README)
 	int m_numWeightSweeps = 0;    ///< PGS sweeps of the weight pass, over all its layers (D13)
-	int m_numWeightRejections = 0;///< weight-pass layers whose re-solve was rejected (D13 guard)
+	int m_numWeightRejections = 0;///< always 0 since the one-setup step (the D13 guard is gone)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).
-	double m_timeGraphMs = 0;            ///< contact graph and layers
-	double m_timeGlobalDynamicsMs = 0;   ///< dynamics(f dt), every body free
-	double m_timeLayersMs = 0;           ///< per layer: correction and dynamics((1 - f) dt)
+	double m_timeGraphMs = 0;            ///< contact graph, layers, Bullet's row setup and rows into layers
+	double m_timeGlobalDynamicsMs = 0;   ///< global pass (and Bullet's own solve of groups without stacks)
+	double m_timeLayersMs = 0;           ///< layer passes, bottom-up
 	double m_timeWeightFeelingMs = 0;    ///< top-down pass of the weight-feeling mode (D13)
-	double m_timeCollisionMs = 0;        ///< second collision detection at t + dt (world only)
-	double m_timeCorrectionMs = 0;       ///< second, global correction (world only)
+	double m_timeCollisionMs = 0;        ///< always 0: the second correction runs no narrowphase (D4)
+	double m_timeCorrectionMs = 0;       ///< finish, position correction at CD(t) and the second correction
 };
 
 #endif  // BT_SHOCK_PROPAGATION_STATISTICS_H

@@ -78,10 +78,6 @@ private:
 	size_t m_firstRowOfGroup = 0;
 };
 
-/// True while a solveGroup call of this solver is the dynamics phase (the plugin world also calls
-/// solveGroup for its position correction, which has no velocity impulses).
-bool isDynamicsSolve(const btConstraintSolver& solver);
-
 /// Any Bullet solver derived from btSequentialImpulseConstraintSolver, with the recorder's hooks.
 template <class Base>
 class RecordingSolver : public Base
@@ -99,14 +95,14 @@ public:
 	void prepareSolve(int numBodies, int numManifolds) override
 	{
 		Base::prepareSolve(numBodies, numManifolds);
-		if (isDynamicsSolve(*this)) m_recorder.beginStep();
+		m_recorder.beginStep();
 	}
 
 	btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 						btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info, btIDebugDraw* debugDrawer,
 						btDispatcher* dispatcher) override
 	{
-		const bool record = m_recorder.armed() && isDynamicsSolve(*this);
+		const bool record = m_recorder.armed();
 		if (record) m_recorder.captureGroup(bodies, numBodies, manifolds, numManifolds, info);
 		const btScalar result = Base::solveGroup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer, dispatcher);
 		if (record) m_recorder.finishGroup();
@@ -116,7 +112,7 @@ public:
 protected:
 	btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int numBodies, const btContactSolverInfo& info) override
 	{
-		if (m_recorder.armed() && isDynamicsSolve(*this))
+		if (m_recorder.armed())
 			m_recorder.recordPass(this->m_tmpSolverContactConstraintPool, this->m_tmpSolverContactFrictionConstraintPool,
 								  (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0);
 		return Base::solveGroupCacheFriendlyFinish(bodies, numBodies, info);

@@ -1,0 +1,263 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "btLayeredPasses.h"
+
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+#include "BulletShockPropagation/btStackLayers.h"
+
+namespace
+{
+/// Counting sort of rows by layer into CSR arrays (start offsets of size K + 1, then rows).
+void bucket(int numLayers, int numRows, const int* layerOfRow, btAlignedObjectArray<int>& start, btAlignedObjectArray<int>& rows)
+{
+	start.resize(numLayers + 1);
+	for (int k = 0; k <= numLayers; ++k) start[k] = 0;
+	for (int i = 0; i < numRows; ++i) ++start[layerOfRow[i] + 1];
+	for (int k = 0; k < numLayers; ++k) start[k + 1] += start[k];
+	rows.resize(numRows);
+	btAlignedObjectArray<int> cursor;
+	cursor.resize(numLayers);
+	for (int k = 0; k < numLayers; ++k) cursor[k] = start[k];
+	for (int i = 0; i < numRows; ++i) rows[cursor[layerOfRow[i]]++] = i;
+}
+
+int clampLayer(int layer, int numLayers)
+{
+	return (layer >= 0 && layer < numLayers) ? layer : 0;
+}
+}  // namespace
+
+void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectArray<int>& contactRowLayer,
+							const btAlignedObjectArray<int>& jointRowLayer, const btAlignedObjectArray<int>& solverBodyOfNode,
+							const btSolverPools& pools)
+{
+	m_layers = &layers;
+	m_numLayers = btMax(1, layers.getNumLayers());
+	btAlignedObjectArray<int> layerOf;
+	const int numContacts = pools.m_contacts.size();
+	layerOf.resize(numContacts);
+	for (int i = 0; i < numContacts; ++i) layerOf[i] = clampLayer(contactRowLayer[i], m_numLayers);
+	bucket(m_numLayers, numContacts, numContacts ? &layerOf[0] : 0, m_contactStart, m_contactRows);
+
+	// Friction and rolling friction rows follow their contact row (m_frictionIndex).
+	btAlignedObjectArray<int> followLayer;
+	const int numFrictions = pools.m_frictions.size();
+	followLayer.resize(numFrictions);
+	for (int i = 0; i < numFrictions; ++i)
+	{
+		const int contact = pools.m_frictions[i].m_frictionIndex;
+		followLayer[i] = (contact >= 0 && contact < numContacts) ? layerOf[contact] : 0;
+	}
+	bucket(m_numLayers, numFrictions, numFrictions ? &followLayer[0] : 0, m_frictionStart, m_frictionRows);
+	const int numRolling = pools.m_rollingFrictions.size();
+	followLayer.resize(numRolling);
+	for (int i = 0; i < numRolling; ++i)
+	{
+		const int contact = pools.m_rollingFrictions[i].m_frictionIndex;
+		followLayer[i] = (contact >= 0 && contact < numContacts) ? layerOf[contact] : 0;
+	}
+	bucket(m_numLayers, numRolling, numRolling ? &followLayer[0] : 0, m_rollingStart, m_rollingRows);
+
+	const int numJoints = pools.m_joints.size();
+	followLayer.resize(numJoints);
+	for (int i = 0; i < numJoints; ++i) followLayer[i] = clampLayer(jointRowLayer[i], m_numLayers);
+	bucket(m_numLayers, numJoints, numJoints ? &followLayer[0] : 0, m_jointStart, m_jointRows);
+
+	m_solverBodyOfNode = solverBodyOfNode;
+	const int numSolverBodies = pools.m_bodies.size();
+	m_nodeOfSolverBody.resize(numSolverBodies);
+	m_fixated.resize(numSolverBodies);
+	for (int i = 0; i < numSolverBodies; ++i)
+	{
+		m_nodeOfSolverBody[i] = -1;
+		m_fixated[i] = 0;
+	}
+	for (int node = 0; node < solverBodyOfNode.size(); ++node)
+	{
+		const int id = solverBodyOfNode[node];
+		if (id >= 0 && id < numSolverBodies) m_nodeOfSolverBody[id] = node;
+	}
+	const int numNodes = solverBodyOfNode.size();
+	m_withheldLinear.resize(numNodes);
+	m_withheldAngular.resize(numNodes);
+	m_hasWithheld.resize(numNodes);
+	for (int i = 0; i < numNodes; ++i)
+	{
+		m_withheldLinear[i].setZero();
+		m_withheldAngular[i].setZero();
+		m_hasWithheld[i] = 0;
+	}
+	m_layerImpulse = 0;
+}
+
+template <class Visit>
+void btLayeredPasses::visitLayerRows(int layer, const btSolverPools& pools, Visit visit)
+{
+	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1]; ++i) visit(pools.m_joints[m_jointRows[i]], BT_ROW_JOINT);
+	for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i) visit(pools.m_contacts[m_contactRows[i]], BT_ROW_CONTACT);
+	for (int i = m_frictionStart[layer]; i < m_frictionStart[layer + 1]; ++i) visit(pools.m_frictions[m_frictionRows[i]], BT_ROW_FRICTION);
+	for (int i = m_rollingStart[layer]; i < m_rollingStart[layer + 1]; ++i)
+		visit(pools.m_rollingFrictions[m_rollingRows[i]], BT_ROW_ROLLING_FRICTION);
+}
+
+void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools)
+{
+	// Lower bodies of the layer (height <= layer): infinite mass while the layer is swept.
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id >= 0) m_fixated[id] = 1;
+	}
+	m_backups.resize(0);
+	m_impulseBefore.resize(0);
+	visitLayerRows(layer, pools, [&](btSolverConstraint& row, btSolverRowKind kind) {
+		m_impulseBefore.push_back(row.m_appliedImpulse);
+		const bool fixA = m_fixated[row.m_solverBodyIdA] != 0;
+		const bool fixB = m_fixated[row.m_solverBodyIdB] != 0;
+		if (!fixA && !fixB) return;
+		m_backups.push_back(btBackupRow(row));
+		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params);
+	});
+	m_savedInvMass.resize(0);
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id < 0) continue;
+		btSolverBody& body = pools.m_bodies[id];
+		m_savedInvMass.push_back(body.internalGetInvMass());
+		body.internalSetInvMass(btVector3(0, 0, 0));
+	}
+}
+
+void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& pools)
+{
+	int saved = 0;
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id < 0) continue;
+		pools.m_bodies[id].internalSetInvMass(m_savedInvMass[saved++]);
+	}
+	int row = 0, backup = 0;
+	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
+		m_layerImpulse += btFabs(change);
+		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
+		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
+		if (!fixA && !fixB) return;
+		btRestoreRow(c, m_backups[backup++]);
+		if (!withhold || change == btScalar(0)) return;
+		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
+		const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+		if (node < 0) return;
+		m_withheldLinear[node] += (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * change;
+		m_withheldAngular[node] += (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * change;
+		m_hasWithheld[node] = 1;
+	});
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id >= 0) m_fixated[id] = 0;
+	}
+}
+
+void btLayeredPasses::sweep(int layer, int iteration, const btSolverPools& pools)
+{
+	// The order of a stock sweep (btSequentialImpulseConstraintSolver::solveSingleIteration,
+	// contacts and friction not interleaved): joints, contact normals, friction bounded by the
+	// normal impulse, rolling friction bounded by the normal impulse and its own coefficient.
+	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
+	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1]; ++i)
+	{
+		btSolverConstraint& c = pools.m_joints[m_jointRows[i]];
+		if (iteration < c.m_overrideNumSolverIterations) pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+	}
+	for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i)
+	{
+		btSolverConstraint& c = pools.m_contacts[m_contactRows[i]];
+		pools.m_lowerLimit(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+	}
+	for (int i = m_frictionStart[layer]; i < m_frictionStart[layer + 1]; ++i)
+	{
+		btSolverConstraint& c = pools.m_frictions[m_frictionRows[i]];
+		const btScalar normal = pools.m_contacts[c.m_frictionIndex].m_appliedImpulse;
+		if (normal > btScalar(0))
+		{
+			c.m_lowerLimit = -(c.m_friction * normal);
+			c.m_upperLimit = c.m_friction * normal;
+			pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+		}
+	}
+	for (int i = m_rollingStart[layer]; i < m_rollingStart[layer + 1]; ++i)
+	{
+		btSolverConstraint& c = pools.m_rollingFrictions[m_rollingRows[i]];
+		const btScalar normal = pools.m_contacts[c.m_frictionIndex].m_appliedImpulse;
+		if (normal > btScalar(0))
+		{
+			const btScalar magnitude = btMin(c.m_friction * normal, c.m_friction);
+			c.m_lowerLimit = -magnitude;
+			c.m_upperLimit = magnitude;
+			pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+		}
+	}
+}
+
+void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools)
+{
+	if (layer < 0 || layer >= m_numLayers) return;
+	fixate(layer, params, pools);
+	for (int iteration = 0; iteration < sweeps; ++iteration) sweep(layer, iteration, pools);
+	release(layer, withhold, pools);
+}
+
+bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
+{
+	// The free bodies of the layer get the impulses the layers above withheld from them.
+	bool any = false;
+	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
+	for (int i = 0; i < numFree; ++i)
+	{
+		const int node = m_layers->getFreeBody(layer, i);
+		if (!m_hasWithheld[node]) continue;
+		const int id = m_solverBodyOfNode[node];
+		if (id >= 0)
+		{
+			btSolverBody& body = pools.m_bodies[id];
+			const btRigidBody* rb = body.m_originalBody;
+			if (rb)
+			{
+				body.internalGetDeltaLinearVelocity() += m_withheldLinear[node] * rb->getInvMass() * rb->getLinearFactor();
+				body.internalGetDeltaAngularVelocity() += (rb->getInvInertiaTensorWorld() * m_withheldAngular[node]) * rb->getAngularFactor();
+				any = true;
+			}
+		}
+		m_withheldLinear[node].setZero();
+		m_withheldAngular[node].setZero();
+		m_hasWithheld[node] = 0;
+	}
+	return any;
+}
+
+int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools)
+{
+	int total = 0;
+	for (int k = m_numLayers - 1; k >= 0; --k)
+	{
+		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
+		solveLayer(k, sweeps, params, true, pools);
+		total += sweeps;
+	}
+	return total;
+}

@@ -1,0 +1,103 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_LAYERED_PASSES_H
+#define BT_SHOCK_PROPAGATION_LAYERED_PASSES_H
+
+#include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
+#include "btLayerFixation.h"
+
+class btStackLayers;
+
+/// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
+struct btSolverPools
+{
+	btAlignedObjectArray<btSolverBody>& m_bodies;
+	btConstraintArray& m_contacts;
+	btConstraintArray& m_frictions;
+	btConstraintArray& m_rollingFrictions;
+	btConstraintArray& m_joints;
+	btSingleConstraintRowSolver m_generic;     ///< Bullet's row kernel with both limits
+	btSingleConstraintRowSolver m_lowerLimit;  ///< Bullet's row kernel for contact normals
+};
+
+/// The layered part of the step (D15): sweep schedules over subsets of the rows Bullet set up
+/// once for the whole step, with a fixation mask per layer.
+///
+///  - build(): every row goes to the layer of its graph edge (friction and rolling rows follow
+///    their contact row); rows of no edge go to layer 0, where nothing is fixated.
+///  - solveLayer(k): the layer's lower bodies are fixated (btLayerFixation: rows re-derived,
+///    solver bodies' inverse mass zeroed), then Bullet's own row kernels sweep the layer's rows
+///    (joints, contacts, friction, rolling friction, as a stock sweep orders them), then rows
+///    and bodies are restored. Impulses accumulate on the step's single impulse per row, so
+///    applied impulses, joint feedback, breaking and motor limits see one step.
+///  - Per-pass impulse bookkeeping (btImpulseShares below): the change of each row's impulse in
+///    the pass that has a fixated end is the reaction fixation withheld from that end; weight
+///    feeling (D13) hands it down in a top-down pass (solveWeightPass).
+/// Private to the plugin.
+class btLayeredPasses
+{
+public:
+	/// rowLayer: per contact row and per joint row, its layer (-1: none, solved in layer 0).
+	/// nodeOfSolverBody: per solver body, its graph node or -1 (static, kinematic, Bullet's fixed body).
+	void build(const btStackLayers& layers, const btAlignedObjectArray<int>& contactRowLayer, const btAlignedObjectArray<int>& jointRowLayer,
+			   const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools);
+
+	int getNumLayers() const { return m_numLayers; }
+
+	/// Sweeps of layer k with its lower bodies fixated. withhold: record the reactions fixation
+	/// keeps from the lower bodies, for solveWeightPass.
+	void solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools);
+
+	/// D13, top-down: the free bodies of each layer receive what the layers above withheld from
+	/// them, then the layer is re-solved with its own lower bodies fixated (withholding in turn).
+	/// Returns the number of sweeps run.
+	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools);
+
+	/// Sum over rows of |impulse change| in the layer passes (N s), for statistics.
+	btScalar getLayerImpulse() const { return m_layerImpulse; }
+
+private:
+	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
+	void release(int layer, bool withhold, const btSolverPools& pools);
+	void sweep(int layer, int iteration, const btSolverPools& pools);
+	bool receiveWithheld(int layer, const btSolverPools& pools);
+
+	template <class Visit>
+	void visitLayerRows(int layer, const btSolverPools& pools, Visit visit);
+
+	int m_numLayers = 0;
+	const btStackLayers* m_layers = 0;
+	// Rows per layer (CSR: start offsets of size K + 1, then row indices), per pool.
+	btAlignedObjectArray<int> m_contactStart, m_contactRows;
+	btAlignedObjectArray<int> m_frictionStart, m_frictionRows;
+	btAlignedObjectArray<int> m_rollingStart, m_rollingRows;
+	btAlignedObjectArray<int> m_jointStart, m_jointRows;
+	btAlignedObjectArray<int> m_solverBodyOfNode;
+	btAlignedObjectArray<int> m_nodeOfSolverBody;
+
+	// Fixation of the current layer.
+	btAlignedObjectArray<char> m_fixated;                 // per solver body
+	btAlignedObjectArray<btVector3> m_savedInvMass;       // per fixated body of the layer
+	btAlignedObjectArray<btFixationBackup> m_backups;     // per row of the layer with a fixated end
+	btAlignedObjectArray<btScalar> m_impulseBefore;       // per row of the layer: impulse at the pass start
+
+	// btImpulseShares: what fixation withheld, per graph node (world-frame linear and angular impulse).
+	btAlignedObjectArray<btVector3> m_withheldLinear;
+	btAlignedObjectArray<btVector3> m_withheldAngular;
+	btAlignedObjectArray<char> m_hasWithheld;
+	btScalar m_layerImpulse = 0;
+};
+
+#endif  // BT_SHOCK_PROPAGATION_LAYERED_PASSES_H

@@ -1,0 +1,152 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "btPositionCorrection.h"
+
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+#include "BulletShockPropagation/btStackLayers.h"
+#include "LinearMath/btTransformUtil.h"
+
+void btPositionCorrection::reset(int numBodies, int numLayers)
+{
+	m_bodies.resize(numBodies);
+	m_fixated.resize(numBodies);
+	for (int i = 0; i < numBodies; ++i)
+	{
+		m_bodies[i].m_body = 0;
+		m_fixated[i] = 0;
+	}
+	m_points.resize(0);
+	m_numLayers = btMax(1, numLayers);
+}
+
+void btPositionCorrection::setBody(int node, btRigidBody* rb)
+{
+	Body& b = m_bodies[node];
+	b.m_body = rb;
+	b.m_invMass = rb->getInvMass();
+	b.m_invInertia = rb->getInvInertiaTensorWorld();
+	b.m_linearFactor = rb->getLinearFactor();
+	b.m_angularFactor = rb->getAngularFactor();
+	b.m_shift.setZero();
+	b.m_turn.setZero();
+}
+
+void btPositionCorrection::addPoint(int nodeA, int nodeB, const btVector3& pointOnA, const btVector3& pointOnB, const btVector3& normalOnB,
+									btScalar target, int layer)
+{
+	Point& p = m_points.expandNonInitializing();
+	p.m_bodyA = (nodeA >= 0 && m_bodies[nodeA].m_body) ? nodeA : -1;
+	p.m_bodyB = (nodeB >= 0 && m_bodies[nodeB].m_body) ? nodeB : -1;
+	p.m_normal = normalOnB;
+	p.m_armA = p.m_bodyA >= 0 ? pointOnA - m_bodies[p.m_bodyA].m_body->getCenterOfMassPosition() : btVector3(0, 0, 0);
+	p.m_armB = p.m_bodyB >= 0 ? pointOnB - m_bodies[p.m_bodyB].m_body->getCenterOfMassPosition() : btVector3(0, 0, 0);
+	p.m_crossA = p.m_armA.cross(normalOnB);
+	p.m_crossB = p.m_armB.cross(normalOnB);
+	p.m_target = target;
+	p.m_lambda = btScalar(0);
+	p.m_layer = (layer >= 0 && layer < m_numLayers) ? layer : 0;
+}
+
+void btPositionCorrection::sweepPoints(int begin, int end)
+{
+	for (int i = begin; i < end; ++i)
+	{
+		Point& p = m_sorted[i];
+		// Separation gained so far along the normal: n . (dx_A + dtheta_A x r_A - dx_B - dtheta_B x r_B).
+		btScalar gained = btScalar(0);
+		btScalar inverseMass = btScalar(0);
+		btVector3 angularA(0, 0, 0), angularB(0, 0, 0);
+		const bool moveA = p.m_bodyA >= 0 && !m_fixated[p.m_bodyA];
+		const bool moveB = p.m_bodyB >= 0 && !m_fixated[p.m_bodyB];
+		if (p.m_bodyA >= 0)
+		{
+			const Body& a = m_bodies[p.m_bodyA];
+			gained += p.m_normal.dot(a.m_shift) + p.m_crossA.dot(a.m_turn);
+			if (moveA)
+			{
+				angularA = (a.m_invInertia * p.m_crossA) * a.m_angularFactor;
+				inverseMass += a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + p.m_crossA.dot(angularA);
+			}
+		}
+		if (p.m_bodyB >= 0)
+		{
+			const Body& b = m_bodies[p.m_bodyB];
+			gained -= p.m_normal.dot(b.m_shift) + p.m_crossB.dot(b.m_turn);
+			if (moveB)
+			{
+				angularB = (b.m_invInertia * p.m_crossB) * b.m_angularFactor;
+				inverseMass += b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + p.m_crossB.dot(angularB);
+			}
+		}
+		if (!(inverseMass > SIMD_EPSILON)) continue;
+		btScalar delta = (p.m_target - gained) / inverseMass;
+		const btScalar sum = p.m_lambda + delta;
+		if (sum < btScalar(0)) delta = -p.m_lambda;
+		p.m_lambda += delta;
+		if (delta == btScalar(0)) continue;
+		if (moveA)
+		{
+			Body& a = m_bodies[p.m_bodyA];
+			a.m_shift += p.m_normal * a.m_linearFactor * (a.m_invMass * delta);
+			a.m_turn += angularA * delta;
+		}
+		if (moveB)
+		{
+			Body& b = m_bodies[p.m_bodyB];
+			b.m_shift -= p.m_normal * b.m_linearFactor * (b.m_invMass * delta);
+			b.m_turn -= angularB * delta;
+		}
+	}
+}
+
+void btPositionCorrection::solve(int sweeps, const btStackLayers* layers)
+{
+	const int numLayers = layers ? m_numLayers : 1;
+	// Points by layer (counting sort; order within a layer kept).
+	m_layerStart.resize(numLayers + 1);
+	for (int k = 0; k <= numLayers; ++k) m_layerStart[k] = 0;
+	for (int i = 0; i < m_points.size(); ++i) ++m_layerStart[(layers ? m_points[i].m_layer : 0) + 1];
+	for (int k = 0; k < numLayers; ++k) m_layerStart[k + 1] += m_layerStart[k];
+	m_sorted.resize(m_points.size());
+	{
+		btAlignedObjectArray<int> cursor;
+		cursor.resize(numLayers);
+		for (int k = 0; k < numLayers; ++k) cursor[k] = m_layerStart[k];
+		for (int i = 0; i < m_points.size(); ++i) m_sorted[cursor[layers ? m_points[i].m_layer : 0]++] = m_points[i];
+	}
+	for (int k = 0; k < numLayers; ++k)
+	{
+		const int begin = m_layerStart[k], end = m_layerStart[k + 1];
+		if (begin == end) continue;
+		if (layers && k < layers->getNumLayers())
+			for (int i = 0; i < layers->getNumFixatedBodies(k); ++i) m_fixated[layers->getFixatedBody(k, i)] = 1;
+		for (int s = 0; s < sweeps; ++s) sweepPoints(begin, end);
+		if (layers && k < layers->getNumLayers())
+			for (int i = 0; i < layers->getNumFixatedBodies(k); ++i) m_fixated[layers->getFixatedBody(k, i)] = 0;
+	}
+}
+
+void btPositionCorrection::apply()
+{
+	for (int i = 0; i < m_bodies.size(); ++i)
+	{
+		Body& b = m_bodies[i];
+		if (!b.m_body || (b.m_shift.isZero() && b.m_turn.isZero())) continue;
+		btTransform corrected;
+		btTransformUtil::integrateTransform(b.m_body->getWorldTransform(), b.m_shift, b.m_turn, btScalar(1), corrected);
+		b.m_body->setWorldTransform(corrected);
+		b.m_body->setInterpolationWorldTransform(corrected);
+	}
+}

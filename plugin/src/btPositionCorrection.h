@@ -1,0 +1,80 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_POSITION_CORRECTION_H
+#define BT_SHOCK_PROPAGATION_POSITION_CORRECTION_H
+
+#include "LinearMath/btAlignedObjectArray.h"
+#include "LinearMath/btMatrix3x3.h"
+#include "LinearMath/btVector3.h"
+
+class btRigidBody;
+class btStackLayers;
+
+/// correction() of Erleben 2007 (D6): a projected Gauss-Seidel solve at position level over the
+/// contact points of a group, moving positions only,
+///   J dq >= d  _|_  lambda >= 0,   dq = W J^T lambda,   d_i = fraction * max(0, depth_i - slop),
+/// layer by layer bottom-up with each layer's lower bodies fixated (infinite mass; their own
+/// correction, done in a lower layer, is seen by the rows above), or with every body free.
+/// It replaces Bullet's Baumgarte term and split impulse in stacked groups: velocities are not
+/// touched, so no energy enters through the correction. Private to the plugin.
+///
+/// Bodies are the graph nodes 0..n-1 of the group; -1 stands for a static or kinematic body.
+class btPositionCorrection
+{
+public:
+	void reset(int numBodies, int numLayers);
+	/// Node i is the rigid body rb (dynamic, finite mass).
+	void setBody(int node, btRigidBody* rb);
+	/// One contact point: world positions on A and B, normal on B (pointing from B to A), the
+	/// depth to remove (metres, > 0), and the layer of its edge.
+	void addPoint(int nodeA, int nodeB, const btVector3& pointOnA, const btVector3& pointOnB, const btVector3& normalOnB,
+				  btScalar target, int layer);
+	int getNumPoints() const { return m_points.size(); }
+
+	/// Layered (layers given) or global (layers null) projection, that many sweeps per layer.
+	void solve(int sweeps, const btStackLayers* layers);
+	/// Move the bodies' transforms by their corrections (world and interpolation transform).
+	void apply();
+
+private:
+	struct Point
+	{
+		int m_bodyA, m_bodyB;
+		btVector3 m_normal;         // on B, from B to A
+		btVector3 m_armA, m_armB;   // contact point minus centre of mass
+		btVector3 m_crossA, m_crossB;  // arm x normal
+		btScalar m_target;
+		btScalar m_lambda;
+		int m_layer;
+	};
+	struct Body
+	{
+		btRigidBody* m_body;
+		btScalar m_invMass;
+		btMatrix3x3 m_invInertia;
+		btVector3 m_linearFactor, m_angularFactor;
+		btVector3 m_shift, m_turn;  // accumulated correction: translation, rotation vector
+	};
+	void sweepPoints(int begin, int end);
+
+	btAlignedObjectArray<Body> m_bodies;
+	btAlignedObjectArray<Point> m_points;
+	btAlignedObjectArray<Point> m_sorted;
+	btAlignedObjectArray<int> m_layerStart;
+	btAlignedObjectArray<char> m_fixated;
+	int m_numLayers = 1;
+};
+
+#endif  // BT_SHOCK_PROPAGATION_POSITION_CORRECTION_H
