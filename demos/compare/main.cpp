@@ -58,9 +58,9 @@ void usage()
 				 "  --param NAME=VALUE    scene parameter (repeatable); --list shows them\n"
 				 "  --csv FILE            summary table as CSV\n"
 				 "  --json FILE           summary and per-step series as JSON\n"
-				 "  --fixation MODE       plugin fixation: linear (default), keep, zero\n"
+				 "  --fixation MODE       plugin fixation: twist (default), linear, keep, zero\n"
 				 "  --global-correction   plugin: the paper's un-layered second correction\n"
-				 "  --slop M,N,...        plugin: correction slop values in metres (default 0.0005)\n"
+				 "  --slop M,N,...        plugin: correction slop values in metres (default: 0.18 g dt^2)\n"
 				 "  --bfs-layers          plugin: plain BFS layers, no support ordering (D12 off)\n"
 				 "  --no-stop-approach    plugin: position-only second correction (D11 off)\n"
 				 "  --weight-sweeps N     plugin with weight feeling (sp-wf): sweeps per loaded layer (default 40)\n"
@@ -107,7 +107,8 @@ Options parseArguments(int argc, char** argv)
 			if (m == "keep") o.fixationMode = BT_FIXATION_KEEP_VELOCITY;
 			else if (m == "zero") o.fixationMode = BT_FIXATION_ZERO_VELOCITY;
 			else if (m == "linear") o.fixationMode = BT_FIXATION_KEEP_LINEAR_VELOCITY;
-			else fail("unknown fixation mode '" + m + "'; valid: linear, keep, zero");
+			else if (m == "twist") o.fixationMode = BT_FIXATION_KEEP_LINEAR_AND_TWIST;
+			else fail("unknown fixation mode '" + m + "'; valid: twist, linear, keep, zero");
 		}
 		else fail("unknown option '" + a + "'");
 	}

@@ -31,13 +31,23 @@ btScalar sideInverseMass(const btSolverBody& body, const btVector3& linearAxis, 
 /// Bullet set the row up with u + u_ext (external impulse: gravity; friction rows leave out the
 /// torque); the sweeps add J (delta u) from the solver body.
 btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
-						btShockPropagationFixationMode mode)
+						const btVector3& contactNormal, btShockPropagationFixationMode mode)
 {
 	if (!body.m_originalBody || mode == BT_FIXATION_KEEP_VELOCITY) return btScalar(0);
+	if (mode == BT_FIXATION_KEEP_LINEAR_AND_TWIST && kind == BT_ROW_JOINT) return btScalar(0);
 	btSolverBody& state = const_cast<btSolverBody&>(body);  // Bullet's delta accessors are not const
 	const bool withTorque = kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT;
-	btScalar angular = angularAxis.dot(body.m_angularVelocity + state.internalGetDeltaAngularVelocity());
-	if (withTorque) angular += angularAxis.dot(body.m_externalTorqueImpulse);
+	btVector3 omega = body.m_angularVelocity + state.internalGetDeltaAngularVelocity();
+	if (withTorque) omega += body.m_externalTorqueImpulse;
+	if (mode == BT_FIXATION_KEEP_LINEAR_AND_TWIST)
+	{
+		// Keep the spin about the contact normal (it moves the upper body along, as a turntable
+		// does); hide the tilt, which is what moves the contact points along the normal.
+		const btScalar length2 = contactNormal.length2();
+		if (length2 > SIMD_EPSILON) omega -= contactNormal * (omega.dot(contactNormal) / length2);
+		return angularAxis.dot(omega);
+	}
+	const btScalar angular = angularAxis.dot(omega);
 	if (mode == BT_FIXATION_KEEP_LINEAR_VELOCITY) return angular;
 	const btScalar linear = linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse);
 	return linear + angular;
@@ -59,7 +69,7 @@ void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup)
 }
 
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
-					   bool fixA, bool fixB, const btLayerFixationParams& params)
+					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal)
 {
 	if (!fixA && !fixB) return;
 	const btScalar jacOld = row.m_jacDiagABInv;
@@ -73,7 +83,7 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	btScalar denominator = cfm;
 	if (fixA)
 	{
-		error += weight * hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, params.m_mode);
+		error += weight * hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params.m_mode);
 		row.m_angularComponentA.setZero();
 	}
 	else
@@ -82,7 +92,7 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	}
 	if (fixB)
 	{
-		error += weight * hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, params.m_mode);
+		error += weight * hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params.m_mode);
 		row.m_angularComponentB.setZero();
 	}
 	else

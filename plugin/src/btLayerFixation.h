@@ -31,8 +31,9 @@ subject to the following restrictions:
 ///   m_rhs = (error + J_F u_F^removed) * m_jacDiagABInv
 /// where error is the row's velocity error as set up (rhs / old m_jacDiagABInv) and u^removed is
 /// the part of F's motion the mode hides: nothing when the full motion is kept (F moves with the
-/// velocity its own layer solved, which the sweeps read from F's solver body), F's angular
-/// motion when only the linear velocity is kept, all of it in zero-velocity mode. The row is
+/// velocity its own layer solved, which the sweeps read from F's solver body), F's tilt (its
+/// rotation about axes across the contact normal) in the default mode, F's angular motion when
+/// only the linear velocity is kept, all of it in zero-velocity mode. The row is
 /// restored from a btFixationBackup after the layer; the btRigidBody is never modified.
 enum btSolverRowKind
 {
@@ -63,8 +64,9 @@ btFixationBackup btBackupRow(const btSolverConstraint& row);
 void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup);
 
 /// Re-derive one row with side A (fixA) or side B fixated. The bodies hold their current
-/// velocities (call before the fixated body's inverse mass is zeroed).
+/// velocities (call before the fixated body's inverse mass is zeroed). contactNormal: the normal
+/// of the contact the row belongs to (contact, friction and rolling rows; zero for joints).
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
-					   bool fixA, bool fixB, const btLayerFixationParams& params);
+					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal);
 
 #endif  // BT_SHOCK_PROPAGATION_LAYER_FIXATION_H

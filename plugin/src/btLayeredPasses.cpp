@@ -128,7 +128,15 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 		const bool fixB = m_fixated[row.m_solverBodyIdB] != 0;
 		if (!fixA && !fixB) return;
 		m_backups.push_back(btBackupRow(row));
-		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params);
+		// The contact normal of the row's contact (friction rows find it through m_frictionIndex).
+		btVector3 normal(0, 0, 0);
+		if (kind == BT_ROW_CONTACT) normal = row.m_contactNormal1.isZero() ? row.m_contactNormal2 : row.m_contactNormal1;
+		else if (kind != BT_ROW_JOINT && row.m_frictionIndex >= 0 && row.m_frictionIndex < pools.m_contacts.size())
+		{
+			const btSolverConstraint& contact = pools.m_contacts[row.m_frictionIndex];
+			normal = contact.m_contactNormal1.isZero() ? contact.m_contactNormal2 : contact.m_contactNormal1;
+		}
+		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params, normal);
 	});
 	m_savedInvMass.resize(0);
 	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)

@@ -119,8 +119,8 @@ std::string SolverSpec::label() const
 	if (kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly)
 	{
 		out << " f=" << weighting;
-		const char* modes[] = {"keep", "zero", "linear"};
-		if (fixationMode >= 0 && fixationMode < 3) out << " fix=" << modes[fixationMode];
+		const char* modes[] = {"keep", "zero", "linear", "twist"};
+		if (fixationMode >= 0 && fixationMode < 4) out << " fix=" << modes[fixationMode];
 		if (globalSecondCorrection) out << " globalcorr";
 		if (correctionSlop >= 0) out << " slop=" << correctionSlop;
 		if (!supportOrdering) out << " bfs";
