@@ -52,6 +52,28 @@ btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, c
 	const btScalar linear = linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse);
 	return linear + angular;
 }
+/// D14 for a contact row with fixated side F and free side R: how much of F's approach speed
+/// a_F = -J_F u_F (> 0: F moves towards R) to take out of the row's velocity error, so that F
+/// pushes R at most at the common normal velocity of an inelastic collision of the two,
+/// (a_F w_R + a_R w_F) / (w_F + w_R) with w = J W J^T of each side. A support heavier than its
+/// load is unaffected; a light fixated body no longer throws a heavy one at its own speed.
+btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLinear, const btVector3& fixatedAngular,
+						 const btVector3& fixatedAngularComponent, const btSolverBody& free, const btVector3& freeLinear,
+						 const btVector3& freeAngular, const btVector3& freeAngularComponent)
+{
+	if (!fixated.m_originalBody || !free.m_originalBody) return btScalar(0);
+	btSolverBody& f = const_cast<btSolverBody&>(fixated);
+	btSolverBody& r = const_cast<btSolverBody&>(free);
+	const btScalar approach = -(fixatedLinear.dot(f.m_linearVelocity + f.internalGetDeltaLinearVelocity()) +
+								fixatedAngular.dot(f.m_angularVelocity + f.internalGetDeltaAngularVelocity()));
+	const btScalar away = freeLinear.dot(r.m_linearVelocity + r.internalGetDeltaLinearVelocity()) +
+						  freeAngular.dot(r.m_angularVelocity + r.internalGetDeltaAngularVelocity());
+	const btScalar wF = sideInverseMass(fixated, fixatedLinear, fixatedAngular, fixatedAngularComponent);
+	const btScalar wR = sideInverseMass(free, freeLinear, freeAngular, freeAngularComponent);
+	if (!(approach > away) || !(approach > btScalar(0)) || !(wF + wR > SIMD_EPSILON)) return btScalar(0);
+	const btScalar common = btMax((approach * wR + away * wF) / (wF + wR), btScalar(0));
+	return approach - common;
+}
 }  // namespace
 
 btFixationBackup btBackupRow(const btSolverConstraint& row)
@@ -79,6 +101,15 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	const btScalar cfm = (kind == BT_ROW_CONTACT && jacOld != btScalar(0)) ? row.m_cfm / jacOld : btScalar(0);
 	// rel_vel = J_A u_A + J_B u_B enters the error with a minus sign (joints weighted by damping).
 	const btScalar weight = kind == BT_ROW_JOINT ? params.m_jointDamping : btScalar(1);
+
+	if (params.m_inelasticFixation && kind == BT_ROW_CONTACT && fixA != fixB)
+	{
+		// D14, before the fixated side's angular component is zeroed below (it holds W_F J_F^T).
+		error -= fixA ? inelasticExcess(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, bodyB,
+										row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB)
+					  : inelasticExcess(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, bodyA,
+										row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA);
+	}
 
 	btScalar denominator = cfm;
 	if (fixA)

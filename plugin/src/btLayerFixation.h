@@ -48,6 +48,9 @@ struct btLayerFixationParams
 	btShockPropagationFixationMode m_mode = BT_FIXATION_KEEP_VELOCITY;
 	btScalar m_sor = btScalar(1);           ///< btContactSolverInfo::m_sor of the step
 	btScalar m_jointDamping = btScalar(1);  ///< btContactSolverInfo::m_damping of the step
+	/// D14: a fixated end approaching the free end of a contact pushes it at most at the common
+	/// velocity of an inelastic collision of the two (btShockPropagationSettings::m_inelasticFixation).
+	bool m_inelasticFixation = true;
 };
 
 /// What btFixateSolverRow changes, to undo it.

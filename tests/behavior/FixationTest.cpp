@@ -5,6 +5,10 @@
 
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 
+#include "btLayerFixation.h"  // private to the plugin (plugin/src)
+
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace
@@ -17,36 +21,28 @@ struct CapturedRow
 	btScalar effectiveMass;  // m_jacDiagABInv
 };
 
-/// Records, during each layer solve, the contact rows that have one detached (fixated) side.
-class RowRecordingSolver : public btShockPropagationConstraintSolver
+/// Bullet's own row setup, run on the side: exposes the rows it builds for a world's manifolds.
+class RowBuilder : public btSequentialImpulseConstraintSolver
 {
 public:
-	std::vector<CapturedRow> rows;
-
-protected:
-	btScalar solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
-											   btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
-											   btIDebugDraw* debugDrawer) override
+	void build(btDiscreteDynamicsWorld& world)
 	{
-		for (int i = 0; i < m_tmpSolverContactConstraintPool.size(); ++i)
-		{
-			const btSolverConstraint& c = m_tmpSolverContactConstraintPool[i];
-			const btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
-			const btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
-			const bool aFixated = !a.m_originalBody && c.m_solverBodyIdA != m_fixedBodyId;
-			const bool bFixated = !b.m_originalBody && c.m_solverBodyIdB != m_fixedBodyId;
-			if (aFixated == bFixated) continue;
-			const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
-			CapturedRow row;
-			row.freeBody = aFixated ? b.m_originalBody : a.m_originalBody;
-			row.contactPoint = aFixated ? cp->getPositionWorldOnB() : cp->getPositionWorldOnA();
-			row.normal = cp->m_normalWorldOnB;
-			row.effectiveMass = c.m_jacDiagABInv;
-			rows.push_back(row);
-		}
-		return btShockPropagationConstraintSolver::solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds, constraints,
-																					  numConstraints, info, debugDrawer);
+		btAlignedObjectArray<btCollisionObject*> bodies;
+		for (int i = 0; i < world.getNumCollisionObjects(); ++i)
+			if (!world.getCollisionObjectArray()[i]->isStaticObject()) bodies.push_back(world.getCollisionObjectArray()[i]);
+		btDispatcher& dispatcher = *world.getDispatcher();
+		btContactSolverInfo info = world.getSolverInfo();
+		info.m_solverMode = 0;  // no warm start: rows only
+		solveGroupCacheFriendlySetup(&bodies[0], bodies.size(), dispatcher.getInternalManifoldPointer(), dispatcher.getNumManifolds(),
+									 nullptr, 0, info, nullptr);
 	}
+	~RowBuilder() override
+	{
+		for (int i = 0; i < m_tmpSolverBodyPool.size(); ++i)
+			if (m_tmpSolverBodyPool[i].m_originalBody) m_tmpSolverBodyPool[i].m_originalBody->setCompanionId(-1);
+	}
+	btAlignedObjectArray<btSolverBody>& bodyPool() { return m_tmpSolverBodyPool; }
+	btConstraintArray& contactRows() { return m_tmpSolverContactConstraintPool; }
 };
 
 /// 1 / (J W J^T) of a contact row on one body: 1 / (1/m + (r x n) . I^-1 (r x n)).
@@ -60,44 +56,40 @@ btScalar handEffectiveMass(const btRigidBody& body, const btVector3& point, cons
 
 TEST(BodyFixation, RowEffectiveMassIsTheFreeBodysAloneByHandComputation)
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	RowRecordingSolver solver;
-	btShockPropagationDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-	world.setGravity(btVector3(0, btScalar(-9.81), 0));
 	// Three boxes: the middle one is fixated under the top one in layer 1; a row that also counted
 	// the middle box's inverse mass and inertia would be far from the hand value.
-	std::unique_ptr<scenes::SceneContent> scene = scenes::createScene(world, "tower", {{"n", 3}});
-	btRigidBody* top = scene->named("top");
-	const std::vector<btRigidBody*> boxes = scene->dynamicBodies();
-	btRigidBody* middle = boxes[1];
+	spec::SceneRun run("tower", spec::shock(), {{"n", 3}});
+	run.run(spec::kTimeStepSeconds);
+	btRigidBody* top = run.scene->named("top");
+	btRigidBody* middle = run.bodies[1];
 	const btScalar middleInvMassBefore = middle->getInvMass();
 	const btVector3 middleInvInertiaBefore = middle->getInvInertiaDiagLocal();
-	const btVector3 middleGravityBefore = middle->getGravity();
-
-	world.stepSimulation(btScalar(1.0 / 60.0), 1, btScalar(1.0 / 60.0));
-
+	RowBuilder builder;
+	builder.build(run.sim->world());
+	btLayerFixationParams params;
 	int checked = 0;
-	for (const CapturedRow& row : solver.rows)
+	for (int i = 0; i < builder.contactRows().size(); ++i)
 	{
-		if (row.freeBody != top) continue;
-		const btScalar expected = handEffectiveMass(*top, row.contactPoint, row.normal);
-		// What zeroing only btSolverBody::m_invMass would leave: both bodies' terms.
-		const btVector3 rLower = row.contactPoint - middle->getCenterOfMassPosition();
-		const btVector3 rxnLower = rLower.cross(row.normal);
-		const btScalar bothBodies = btScalar(1) / (btScalar(1) / expected + middle->getInvMass() + rxnLower.dot(middle->getInvInertiaTensorWorld() * rxnLower));
-		EXPECT_NEAR(row.effectiveMass, expected, 1e-4 * expected);
-		EXPECT_GT(std::fabs(row.effectiveMass - bothBodies), 0.1 * expected);
+		btSolverConstraint& row = builder.contactRows()[i];
+		btSolverBody& a = builder.bodyPool()[row.m_solverBodyIdA];
+		btSolverBody& b = builder.bodyPool()[row.m_solverBodyIdB];
+		const bool fixA = a.m_originalBody == middle && b.m_originalBody == top;
+		const bool fixB = b.m_originalBody == middle && a.m_originalBody == top;
+		if (!fixA && !fixB) continue;
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+		const btVector3 point = fixA ? cp->getPositionWorldOnB() : cp->getPositionWorldOnA();
+		const btScalar expected = handEffectiveMass(*top, point, cp->m_normalWorldOnB);
+		const btScalar before = row.m_jacDiagABInv;
+		btFixateSolverRow(row, BT_ROW_CONTACT, a, b, fixA, fixB, params, cp->m_normalWorldOnB);
+		EXPECT_NEAR(row.m_jacDiagABInv, expected, 1e-4 * expected);
+		EXPECT_GT(std::fabs(row.m_jacDiagABInv - before), 0.1 * expected) << "the row as set up counted both bodies";
+		EXPECT_TRUE((fixA ? row.m_angularComponentA : row.m_angularComponentB).isZero()) << "impulses must not turn the fixated body";
 		++checked;
 	}
-	EXPECT_GE(checked, 3) << "expected the top box's contact rows in its layer";
+	EXPECT_GE(checked, 3) << "expected the top box's contact rows on the middle box";
 	// The fixated body itself was never changed.
 	EXPECT_EQ(middle->getInvMass(), middleInvMassBefore);
 	EXPECT_EQ(middle->getInvInertiaDiagLocal(), middleInvInertiaBefore);
-	EXPECT_EQ(middle->getGravity(), middleGravityBefore);
-	EXPECT_EQ(middle->getCollisionFlags() & btCollisionObject::CF_STATIC_OBJECT, 0);
-	scene.reset();
 }
 
 TEST(BodyFixation, FixatedBodyIsNotMovedByTheLayerAbove)

@@ -107,6 +107,7 @@ private:
 	void buildGraph();
 	void solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void assignRowsToLayers();
+	void limitWarmStart(const btContactSolverInfo& info);
 	/// Position correction of the group's contacts; fresh: depths from the current transforms.
 	void correctPositions(const btContactSolverInfo& info, bool fresh, bool layered);
 	int sweepCount(int setting, int worldIterations) const;
