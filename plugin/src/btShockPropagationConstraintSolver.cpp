@@ -27,6 +27,7 @@ subject to the following restrictions:
 #include <cmath>
 #include <cstdio>
 #include <new>
+#include <stdexcept>
 
 namespace
 {
@@ -150,6 +151,19 @@ void btShockPropagationConstraintSolver::prepareSolve(int numBodies, int numMani
 	m_stats = btShockPropagationStatistics();
 	m_layeredBodies.resize(0);
 	m_layeredBodyHeights.resize(0);
+	m_solveGroupCalls = 0;
+}
+
+void btShockPropagationConstraintSolver::allSolved(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	btSequentialImpulseConstraintSolver::allSolved(info, debugDrawer);
+	if (m_solveGroupCalls == 0)
+	{
+		throw std::logic_error(
+			"btShockPropagationConstraintSolver: the world prepared a step but never called solveGroup. "
+			"btMultiBodyDynamicsWorld keeps solving with its own btMultiBodyConstraintSolver, so the plugin cannot run "
+			"there (not supported); use btDiscreteDynamicsWorld or btShockPropagationDynamicsWorld");
+	}
 }
 
 btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
@@ -157,6 +171,7 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 														const btContactSolverInfo& info, btIDebugDraw* debugDrawer, btDispatcher* /*dispatcher*/)
 {
 	BT_PROFILE("btShockPropagationConstraintSolver::solveGroup");
+	++m_solveGroupCalls;
 	filterInput(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, true);
 	btClock clock;
 	buildGraph();

@@ -88,6 +88,13 @@ public:
 
 	virtual void prepareSolve(int numBodies, int numManifolds) BT_OVERRIDE;
 
+	/// Throws std::logic_error if the world called prepareSolve and allSolved without a solveGroup
+	/// in between: btDiscreteDynamicsWorld always calls solveGroup at least once per step, while
+	/// btMultiBodyDynamicsWorld keeps solving with its own btMultiBodyConstraintSolver, so the
+	/// plugin would silently do nothing there (not supported; use btDiscreteDynamicsWorld or
+	/// btShockPropagationDynamicsWorld).
+	virtual void allSolved(const btContactSolverInfo& info, class btIDebugDraw* debugDrawer) BT_OVERRIDE;
+
 	virtual btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 								btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
 								btIDebugDraw* debugDrawer, btDispatcher* dispatcher) BT_OVERRIDE;
@@ -115,6 +122,7 @@ private:
 	btShockPropagationSettings m_settings;
 	btShockPropagationStatistics m_stats;
 	bool m_warnedNonFinite = false;
+	int m_solveGroupCalls = 0;  // since the last prepareSolve
 
 	// Per-call working sets (kept to reuse their memory across steps).
 	btAlignedObjectArray<btCollisionObject*> m_bodies;  // graph nodes: healthy dynamic bodies
