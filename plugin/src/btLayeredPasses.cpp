@@ -20,14 +20,14 @@ subject to the following restrictions:
 namespace
 {
 /// Counting sort of rows by layer into CSR arrays (start offsets of size K + 1, then rows).
-void bucket(int numLayers, int numRows, const int* layerOfRow, btAlignedObjectArray<int>& start, btAlignedObjectArray<int>& rows)
+void bucket(int numLayers, int numRows, const int* layerOfRow, btAlignedObjectArray<int>& start, btAlignedObjectArray<int>& rows,
+			btAlignedObjectArray<int>& cursor)
 {
 	start.resize(numLayers + 1);
 	for (int k = 0; k <= numLayers; ++k) start[k] = 0;
 	for (int i = 0; i < numRows; ++i) ++start[layerOfRow[i] + 1];
 	for (int k = 0; k < numLayers; ++k) start[k + 1] += start[k];
 	rows.resize(numRows);
-	btAlignedObjectArray<int> cursor;
 	cursor.resize(numLayers);
 	for (int k = 0; k < numLayers; ++k) cursor[k] = start[k];
 	for (int i = 0; i < numRows; ++i) rows[cursor[layerOfRow[i]]++] = i;
@@ -45,14 +45,14 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 {
 	m_layers = &layers;
 	m_numLayers = btMax(1, layers.getNumLayers());
-	btAlignedObjectArray<int> layerOf;
+	btAlignedObjectArray<int>& layerOf = m_scratchLayer;
 	const int numContacts = pools.m_contacts.size();
 	layerOf.resize(numContacts);
 	for (int i = 0; i < numContacts; ++i) layerOf[i] = clampLayer(contactRowLayer[i], m_numLayers);
-	bucket(m_numLayers, numContacts, numContacts ? &layerOf[0] : 0, m_contactStart, m_contactRows);
+	bucket(m_numLayers, numContacts, numContacts ? &layerOf[0] : 0, m_contactStart, m_contactRows, m_scratchCursor);
 
 	// Friction and rolling friction rows follow their contact row (m_frictionIndex).
-	btAlignedObjectArray<int> followLayer;
+	btAlignedObjectArray<int>& followLayer = m_scratchFollow;
 	const int numFrictions = pools.m_frictions.size();
 	followLayer.resize(numFrictions);
 	for (int i = 0; i < numFrictions; ++i)
@@ -60,7 +60,7 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		const int contact = pools.m_frictions[i].m_frictionIndex;
 		followLayer[i] = (contact >= 0 && contact < numContacts) ? layerOf[contact] : 0;
 	}
-	bucket(m_numLayers, numFrictions, numFrictions ? &followLayer[0] : 0, m_frictionStart, m_frictionRows);
+	bucket(m_numLayers, numFrictions, numFrictions ? &followLayer[0] : 0, m_frictionStart, m_frictionRows, m_scratchCursor);
 	const int numRolling = pools.m_rollingFrictions.size();
 	followLayer.resize(numRolling);
 	for (int i = 0; i < numRolling; ++i)
@@ -68,12 +68,12 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		const int contact = pools.m_rollingFrictions[i].m_frictionIndex;
 		followLayer[i] = (contact >= 0 && contact < numContacts) ? layerOf[contact] : 0;
 	}
-	bucket(m_numLayers, numRolling, numRolling ? &followLayer[0] : 0, m_rollingStart, m_rollingRows);
+	bucket(m_numLayers, numRolling, numRolling ? &followLayer[0] : 0, m_rollingStart, m_rollingRows, m_scratchCursor);
 
 	const int numJoints = pools.m_joints.size();
 	followLayer.resize(numJoints);
 	for (int i = 0; i < numJoints; ++i) followLayer[i] = clampLayer(jointRowLayer[i], m_numLayers);
-	bucket(m_numLayers, numJoints, numJoints ? &followLayer[0] : 0, m_jointStart, m_jointRows);
+	bucket(m_numLayers, numJoints, numJoints ? &followLayer[0] : 0, m_jointStart, m_jointRows, m_scratchCursor);
 
 	m_solverBodyOfNode = solverBodyOfNode;
 	const int numSolverBodies = pools.m_bodies.size();

@@ -98,6 +98,7 @@ private:
 	btAlignedObjectArray<btVector3> m_withheldAngular;
 	btAlignedObjectArray<char> m_hasWithheld;
 	btScalar m_layerImpulse = 0;
+	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 };
 
 #endif  // BT_SHOCK_PROPAGATION_LAYERED_PASSES_H

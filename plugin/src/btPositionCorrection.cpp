@@ -120,12 +120,9 @@ void btPositionCorrection::solve(int sweeps, const btStackLayers* layers)
 	for (int i = 0; i < m_points.size(); ++i) ++m_layerStart[(layers ? m_points[i].m_layer : 0) + 1];
 	for (int k = 0; k < numLayers; ++k) m_layerStart[k + 1] += m_layerStart[k];
 	m_sorted.resize(m_points.size());
-	{
-		btAlignedObjectArray<int> cursor;
-		cursor.resize(numLayers);
-		for (int k = 0; k < numLayers; ++k) cursor[k] = m_layerStart[k];
-		for (int i = 0; i < m_points.size(); ++i) m_sorted[cursor[layers ? m_points[i].m_layer : 0]++] = m_points[i];
-	}
+	m_cursor.resize(numLayers);
+	for (int k = 0; k < numLayers; ++k) m_cursor[k] = m_layerStart[k];
+	for (int i = 0; i < m_points.size(); ++i) m_sorted[m_cursor[layers ? m_points[i].m_layer : 0]++] = m_points[i];
 	for (int k = 0; k < numLayers; ++k)
 	{
 		const int begin = m_layerStart[k], end = m_layerStart[k + 1];

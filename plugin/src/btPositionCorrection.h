@@ -73,6 +73,7 @@ private:
 	btAlignedObjectArray<Point> m_points;
 	btAlignedObjectArray<Point> m_sorted;
 	btAlignedObjectArray<int> m_layerStart;
+	btAlignedObjectArray<int> m_cursor;
 	btAlignedObjectArray<char> m_fixated;
 	int m_numLayers = 1;
 };

@@ -474,13 +474,14 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 	bool anyStack = m_layers.getNumLayers() > 1 || m_settings.m_layerFlatGroups;
 	if (anyStack)
 	{
-		btAlignedObjectArray<int> tallest;
+		btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
 		tallest.resize(m_layers.getNumComponents());
 		for (int c = 0; c < tallest.size(); ++c) tallest[c] = 0;
 		for (int i = 0; i < m_bodies.size(); ++i)
 			tallest[m_layers.getComponent(i)] = btMax(tallest[m_layers.getComponent(i)], m_layers.getHeight(i));
 		int keptManifolds = 0;
-		btAlignedObjectArray<int> keptEdges;
+		btAlignedObjectArray<int>& keptEdges = m_keptEdges;
+		keptEdges.resize(0);
 		for (int i = 0; i < m_manifolds.size(); ++i)
 		{
 			const int edge = m_edgeOfManifold[i];

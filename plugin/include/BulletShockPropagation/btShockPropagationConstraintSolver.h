@@ -133,6 +133,8 @@ private:
 	btAlignedObjectArray<int> m_contactRowLayer;
 	btAlignedObjectArray<int> m_jointRowLayer;
 	btAlignedObjectArray<int> m_solverBodyOfNode;
+	btAlignedObjectArray<int> m_tallestOfComponent;  // second correction: tallest height per component
+	btAlignedObjectArray<int> m_keptEdges;
 	btContactGraph m_graph;
 	btStackLayers m_layers;
 	btLayeredPasses* m_passes;
