@@ -189,8 +189,11 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 
 	if (numLayers <= 1 && !m_settings.m_layerFlatGroups)
 	{
-		// No stacks: Bullet's own solve of the group, with the app's settings (D9).
+		// No stacks: Bullet's own solve of the group, with the app's settings (D9). The warm start
+		// limit (D5) holds here too: a group that was layered last step may have left impulses
+		// sized for a heavy upper body on a light one.
 		clock.reset();
+		limitWarmStart(info);
 		btSequentialImpulseConstraintSolver::solveGroup(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(),
 														m_manifolds.size() ? &m_manifolds[0] : 0, m_manifolds.size(),
 														m_constraints.size() ? &m_constraints[0] : 0, m_constraints.size(), info, debugDrawer, 0);
