@@ -7,6 +7,7 @@
 //                            scene fall shows it here.
 // Filter with --benchmark_filter, e.g. 'Step/wall/'.
 #include <BulletShockPropagation/btContactGraph.h>
+#include <BulletShockPropagation/btShockPropagationSettings.h>
 #include <BulletShockPropagation/btStackLayers.h>
 #include <harness/Metrics.h>
 #include <harness/Simulation.h>
@@ -47,17 +48,22 @@ struct World
 	}
 };
 
-/// Edges of the world's manifolds as the plugin's graph sees them (bodies numbered as the scene's
-/// dynamic bodies; static ones are roots; "rests on" from the normal against gravity).
-struct EdgeList
+/// The world's manifolds with their bodies' node numbers (the scene's dynamic bodies; static ones
+/// are roots), as the plugin's solver hands them to btContactGraph.
+struct ManifoldList
 {
 	int numBodies = 0;
-	std::vector<btContactGraphEdge> edges;
+	struct Entry
+	{
+		const btPersistentManifold* manifold;
+		int nodeA, nodeB;
+	};
+	std::vector<Entry> entries;
 };
 
-EdgeList edgesOf(World& w)
+ManifoldList manifoldsOf(World& w)
 {
-	EdgeList list;
+	ManifoldList list;
 	const std::vector<btRigidBody*> bodies = w.scene->dynamicBodies();
 	std::unordered_map<const btCollisionObject*, int> node;
 	for (size_t i = 0; i < bodies.size(); ++i) node[bodies[i]] = int(i);
@@ -70,10 +76,7 @@ EdgeList edgesOf(World& w)
 	for (int i = 0; i < dispatcher.getNumManifolds(); ++i)
 	{
 		const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
-		if (m->getNumContacts() == 0) continue;
-		const btScalar up = m->getContactPoint(0).m_normalWorldOnB.y();  // normal from B to A
-		const int support = up > btScalar(0.5) ? BT_SUPPORT_A_ON_B : up < btScalar(-0.5) ? BT_SUPPORT_B_ON_A : BT_SUPPORT_NONE;
-		list.edges.push_back({nodeOf(m->getBody0()), nodeOf(m->getBody1()), i, support});
+		list.entries.push_back({m, nodeOf(m->getBody0()), nodeOf(m->getBody1())});
 	}
 	return list;
 }
@@ -81,19 +84,23 @@ EdgeList edgesOf(World& w)
 void graphAndLayers(benchmark::State& state, const std::string& scene)
 {
 	World w("si", scene);
-	const EdgeList list = edgesOf(w);
+	const ManifoldList list = manifoldsOf(w);
+	const btShockPropagationSettings settings;
+	const btVector3 up(0, 1, 0);
 	btContactGraph graph;
 	btStackLayers layers;
 	for (auto _ : state)
 	{
+		// The plugin's own edge rule and support test (btContactGraph::addManifold), then the layers.
 		graph.reset(list.numBodies);
-		for (const btContactGraphEdge& e : list.edges) graph.addEdge(e.m_bodyA, e.m_bodyB, e.m_source, e.m_support);
+		for (size_t i = 0; i < list.entries.size(); ++i)
+			graph.addManifold(list.entries[i].manifold, list.entries[i].nodeA, list.entries[i].nodeB, int(i), up, settings.m_supportAngle);
 		graph.buildAdjacency();
 		layers.build(graph);
 		benchmark::DoNotOptimize(layers.getNumLayers());
 	}
 	state.counters["bodies"] = list.numBodies;
-	state.counters["edges"] = double(list.edges.size());
+	state.counters["edges"] = graph.getNumEdges();
 	state.counters["layers"] = layers.getNumLayers();
 }
 
