@@ -52,6 +52,15 @@ btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, c
 	const btScalar linear = linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse);
 	return linear + angular;
 }
+/// J u of one end of a contact row as the sweeps see it: velocity, this step's external impulse
+/// (gravity, torque) and the deltas of the solve so far.
+btScalar velocityAlong(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis)
+{
+	btSolverBody& state = const_cast<btSolverBody&>(body);  // Bullet's delta accessors are not const
+	return linearAxis.dot(body.m_linearVelocity + body.m_externalForceImpulse + state.internalGetDeltaLinearVelocity()) +
+		   angularAxis.dot(body.m_angularVelocity + body.m_externalTorqueImpulse + state.internalGetDeltaAngularVelocity());
+}
+
 /// D14 for a contact row with fixated side F and free side R: how much of F's approach speed
 /// a_F = -J_F u_F (> 0: F moves towards R) to take out of the row's velocity error, so that F
 /// pushes R at most at the common normal velocity of an inelastic collision of the two,
@@ -59,15 +68,15 @@ btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, c
 /// load is unaffected; a light fixated body no longer throws a heavy one at its own speed.
 btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLinear, const btVector3& fixatedAngular,
 						 const btVector3& fixatedAngularComponent, const btSolverBody& free, const btVector3& freeLinear,
-						 const btVector3& freeAngular, const btVector3& freeAngularComponent)
+						 const btVector3& freeAngular, const btVector3& freeAngularComponent, const btVector3& contactNormal,
+						 btShockPropagationFixationMode mode)
 {
-	if (!fixated.m_originalBody || !free.m_originalBody) return btScalar(0);
-	btSolverBody& f = const_cast<btSolverBody&>(fixated);
-	btSolverBody& r = const_cast<btSolverBody&>(free);
-	const btScalar approach = -(fixatedLinear.dot(f.m_linearVelocity + f.internalGetDeltaLinearVelocity()) +
-								fixatedAngular.dot(f.m_angularVelocity + f.internalGetDeltaAngularVelocity()));
-	const btScalar away = freeLinear.dot(r.m_linearVelocity + r.internalGetDeltaLinearVelocity()) +
-						  freeAngular.dot(r.m_angularVelocity + r.internalGetDeltaAngularVelocity());
+	if (!fixated.m_originalBody || !free.m_originalBody || mode == BT_FIXATION_ZERO_VELOCITY) return btScalar(0);
+	// Velocities as the row sees them: set up with u + u_ext (gravity), swept with the deltas;
+	// the fixated end as its mode shows it.
+	const btScalar approach = -(velocityAlong(fixated, fixatedLinear, fixatedAngular) -
+								hiddenVelocity(fixated, fixatedLinear, fixatedAngular, BT_ROW_CONTACT, contactNormal, mode));
+	const btScalar away = velocityAlong(free, freeLinear, freeAngular);
 	const btScalar wF = sideInverseMass(fixated, fixatedLinear, fixatedAngular, fixatedAngularComponent);
 	const btScalar wR = sideInverseMass(free, freeLinear, freeAngular, freeAngularComponent);
 	if (!(approach > away) || !(approach > btScalar(0)) || !(wF + wR > SIMD_EPSILON)) return btScalar(0);
@@ -106,9 +115,9 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	{
 		// D14, before the fixated side's angular component is zeroed below (it holds W_F J_F^T).
 		error -= fixA ? inelasticExcess(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, bodyB,
-										row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB)
+										row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, contactNormal, params.m_mode)
 					  : inelasticExcess(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, bodyA,
-										row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA);
+										row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, contactNormal, params.m_mode);
 	}
 
 	btScalar denominator = cfm;

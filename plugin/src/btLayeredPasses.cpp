@@ -14,7 +14,6 @@ subject to the following restrictions:
 
 #include "btLayeredPasses.h"
 
-#include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "BulletShockPropagation/btStackLayers.h"
 
 namespace
@@ -89,16 +88,7 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		const int id = solverBodyOfNode[node];
 		if (id >= 0 && id < numSolverBodies) m_nodeOfSolverBody[id] = node;
 	}
-	const int numNodes = solverBodyOfNode.size();
-	m_withheldLinear.resize(numNodes);
-	m_withheldAngular.resize(numNodes);
-	m_hasWithheld.resize(numNodes);
-	for (int i = 0; i < numNodes; ++i)
-	{
-		m_withheldLinear[i].setZero();
-		m_withheldAngular[i].setZero();
-		m_hasWithheld[i] = 0;
-	}
+	m_withheld.reset(solverBodyOfNode.size());
 	m_layerImpulse = 0;
 }
 
@@ -170,9 +160,8 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
 		const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
 		if (node < 0) return;
-		m_withheldLinear[node] += (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * change;
-		m_withheldAngular[node] += (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * change;
-		m_hasWithheld[node] = 1;
+		m_withheld.add(node, (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * change,
+					   (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * change);
 	});
 	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
 	{
@@ -238,22 +227,15 @@ bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
 	for (int i = 0; i < numFree; ++i)
 	{
 		const int node = m_layers->getFreeBody(layer, i);
-		if (!m_hasWithheld[node]) continue;
+		if (!m_withheld.has(node)) continue;
 		const int id = m_solverBodyOfNode[node];
-		if (id >= 0)
+		if (id < 0)
 		{
-			btSolverBody& body = pools.m_bodies[id];
-			const btRigidBody* rb = body.m_originalBody;
-			if (rb)
-			{
-				body.internalGetDeltaLinearVelocity() += m_withheldLinear[node] * rb->getInvMass() * rb->getLinearFactor();
-				body.internalGetDeltaAngularVelocity() += (rb->getInvInertiaTensorWorld() * m_withheldAngular[node]) * rb->getAngularFactor();
-				any = true;
-			}
+			m_withheld.discard(node);
+			continue;
 		}
-		m_withheldLinear[node].setZero();
-		m_withheldAngular[node].setZero();
-		m_hasWithheld[node] = 0;
+		m_withheld.deliver(node, pools.m_bodies[id]);
+		any = true;
 	}
 	return any;
 }

@@ -17,6 +17,7 @@ subject to the following restrictions:
 
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
 #include "btLayerFixation.h"
+#include "btWithheldReactions.h"
 
 class btStackLayers;
 
@@ -42,8 +43,8 @@ struct btSolverPools
 ///    (joints, contacts, friction, rolling friction, as a stock sweep orders them), then rows
 ///    and bodies are restored. Impulses accumulate on the step's single impulse per row, so
 ///    applied impulses, joint feedback, breaking and motor limits see one step.
-///  - Per-pass impulse bookkeeping (btImpulseShares below): the change of each row's impulse in
-///    the pass that has a fixated end is the reaction fixation withheld from that end; weight
+///  - Per-pass impulse bookkeeping (btWithheldReactions): the change of each row's impulse in
+///    a pass where one end is fixated is the reaction fixation withheld from that end; weight
 ///    feeling (D13) hands it down in a top-down pass (solveWeightPass).
 /// Private to the plugin.
 class btLayeredPasses
@@ -93,10 +94,7 @@ private:
 	btAlignedObjectArray<btFixationBackup> m_backups;     // per row of the layer with a fixated end
 	btAlignedObjectArray<btScalar> m_impulseBefore;       // per row of the layer: impulse at the pass start
 
-	// btImpulseShares: what fixation withheld, per graph node (world-frame linear and angular impulse).
-	btAlignedObjectArray<btVector3> m_withheldLinear;
-	btAlignedObjectArray<btVector3> m_withheldAngular;
-	btAlignedObjectArray<char> m_hasWithheld;
+	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
 	btScalar m_layerImpulse = 0;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 };

@@ -20,11 +20,19 @@ subject to the following restrictions:
 
 void btPositionCorrection::reset(int numBodies, int numLayers)
 {
-	m_bodies.resize(numBodies);
+	Body empty;
+	empty.m_body = 0;
+	empty.m_invMass = btScalar(0);
+	empty.m_invInertia.setZero();
+	empty.m_linearFactor.setZero();
+	empty.m_angularFactor.setZero();
+	empty.m_shift.setZero();
+	empty.m_turn.setZero();
+	m_bodies.resize(numBodies, empty);
 	m_fixated.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i)
 	{
-		m_bodies[i].m_body = 0;
+		m_bodies[i] = empty;
 		m_fixated[i] = 0;
 	}
 	m_points.resize(0);

@@ -1,0 +1,56 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "btWithheldReactions.h"
+
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+
+void btWithheldReactions::reset(int numNodes)
+{
+	m_linear.resize(numNodes);
+	m_angular.resize(numNodes);
+	m_has.resize(numNodes);
+	for (int i = 0; i < numNodes; ++i)
+	{
+		m_linear[i].setZero();
+		m_angular[i].setZero();
+		m_has[i] = 0;
+	}
+}
+
+void btWithheldReactions::add(int node, const btVector3& linear, const btVector3& angular)
+{
+	m_linear[node] += linear;
+	m_angular[node] += angular;
+	m_has[node] = 1;
+}
+
+void btWithheldReactions::deliver(int node, btSolverBody& body)
+{
+	const btRigidBody* rb = body.m_originalBody;
+	if (rb)
+	{
+		// The velocity change Bullet's kernels would have made: W J^T lambda, with the body's factors.
+		body.internalGetDeltaLinearVelocity() += m_linear[node] * rb->getInvMass() * rb->getLinearFactor();
+		body.internalGetDeltaAngularVelocity() += (rb->getInvInertiaTensorWorld() * m_angular[node]) * rb->getAngularFactor();
+	}
+	discard(node);
+}
+
+void btWithheldReactions::discard(int node)
+{
+	m_linear[node].setZero();
+	m_angular[node].setZero();
+	m_has[node] = 0;
+}
