@@ -21,6 +21,7 @@ subject to the following restrictions:
 #include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "LinearMath/btQuickprof.h"
+#include "btBodyChecks.h"
 #include "btLayeredPasses.h"
 #include "btPositionCorrection.h"
 
@@ -29,71 +30,7 @@ subject to the following restrictions:
 #include <new>
 #include <stdexcept>
 
-namespace
-{
-bool isFiniteScalar(btScalar x)
-{
-	return x == x && x - x == btScalar(0);  // false for NaN and for +-Inf
-}
-
-bool isFiniteVector(const btVector3& v)
-{
-	return isFiniteScalar(v.x() + v.y() + v.z());
-}
-
-/// Transform and velocities finite (a NaN or Inf anywhere makes the sum non-finite).
-bool isHealthy(const btCollisionObject* object)
-{
-	const btTransform& t = object->getWorldTransform();
-	const btMatrix3x3& m = t.getBasis();
-	btScalar sum = t.getOrigin().x() + t.getOrigin().y() + t.getOrigin().z();
-	for (int i = 0; i < 3; ++i) sum += m[i].x() + m[i].y() + m[i].z();
-	if (const btRigidBody* rb = btRigidBody::upcast(object))
-	{
-		const btVector3& v = rb->getLinearVelocity();
-		const btVector3& w = rb->getAngularVelocity();
-		sum += v.x() + v.y() + v.z() + w.x() + w.y() + w.z();
-	}
-	return isFiniteScalar(sum);
-}
-
-/// A graph node: a dynamic body with finite mass (static, kinematic and zero-mass bodies are roots).
-bool isNode(const btCollisionObject* object)
-{
-	const btRigidBody* rb = btRigidBody::upcast(object);
-	return rb && !object->isStaticOrKinematicObject() && rb->getInvMass() != btScalar(0);
-}
-
-bool hasFinitePoints(const btPersistentManifold* manifold)
-{
-	for (int j = 0; j < manifold->getNumContacts(); ++j)
-	{
-		const btManifoldPoint& cp = manifold->getContactPoint(j);
-		if (!isFiniteScalar(cp.getDistance()) || !isFiniteVector(cp.m_normalWorldOnB) ||
-			!isFiniteVector(cp.getPositionWorldOnA()) || !isFiniteVector(cp.getPositionWorldOnB()))
-		{
-			return false;
-		}
-	}
-	return true;
-}
-
-/// Up (unit, -gravity / |g|) of the manifold's dynamic end; zero without gravity.
-btVector3 upOf(const btPersistentManifold* manifold)
-{
-	const btRigidBody* dynamic = btRigidBody::upcast(manifold->getBody0());
-	if (!dynamic || dynamic->getInvMass() == btScalar(0)) dynamic = btRigidBody::upcast(manifold->getBody1());
-	if (!dynamic) return btVector3(0, 0, 0);
-	const btVector3 gravity = dynamic->getGravity();
-	const btScalar g = gravity.length();
-	return g > SIMD_EPSILON ? -gravity / g : btVector3(0, 0, 0);
-}
-
-double millisecondsSince(btClock& clock)
-{
-	return double(clock.getTimeMicroseconds()) * 1e-3;
-}
-}  // namespace
+using namespace btShockPropagationChecks;
 
 btShockPropagationConstraintSolver::btShockPropagationConstraintSolver()
 	: m_passes(new (btAlignedAlloc(sizeof(btLayeredPasses), 16)) btLayeredPasses),
@@ -204,70 +141,6 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 	m_stats.m_numFixatedBodies += m_layers.getTotalFixated();
 	solveLayered(info, debugDrawer);
 	return btScalar(0);
-}
-
-void btShockPropagationConstraintSolver::filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
-													 int numManifolds, btTypedConstraint** constraints, int numConstraints, bool countInStatistics)
-{
-	m_bodies.resize(0);
-	m_manifolds.resize(0);
-	m_constraints.resize(0);
-	int skippedBodies = 0;
-	for (int i = 0; i < numBodies; ++i)
-	{
-		if (!isHealthy(bodies[i])) ++skippedBodies;
-		else if (isNode(bodies[i])) m_bodies.push_back(bodies[i]);
-	}
-	int skippedManifolds = 0;
-	for (int i = 0; i < numManifolds; ++i)
-	{
-		const btPersistentManifold* m = manifolds[i];
-		if (isHealthy(m->getBody0()) && isHealthy(m->getBody1()) && hasFinitePoints(m)) m_manifolds.push_back(manifolds[i]);
-		else ++skippedManifolds;
-	}
-	for (int i = 0; i < numConstraints; ++i)
-	{
-		if (isHealthy(&constraints[i]->getRigidBodyA()) && isHealthy(&constraints[i]->getRigidBodyB())) m_constraints.push_back(constraints[i]);
-	}
-	if (!countInStatistics) return;
-	if ((skippedBodies || skippedManifolds) && !m_warnedNonFinite)
-	{
-		m_warnedNonFinite = true;
-		std::fprintf(stderr,
-					 "BulletShockPropagation: %d body(ies) with a NaN/Inf transform or velocity and %d manifold(s) touching them "
-					 "are left out of the solve (warned once; see getStatistics().m_numSkippedBodies)\n",
-					 skippedBodies, skippedManifolds);
-	}
-	m_stats.m_numSkippedBodies += skippedBodies;
-	m_stats.m_numSkippedManifolds += skippedManifolds;
-}
-
-void btShockPropagationConstraintSolver::buildGraph()
-{
-	const int n = m_bodies.size();
-	m_graph.reset(n);
-	// Bullet keeps companion ids at -1 between solves; borrow them as node indices meanwhile.
-	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(i);
-	auto nodeOf = [this](const btCollisionObject* object) {
-		const int id = object->getCompanionId();
-		return (id >= 0 && id < m_bodies.size() && m_bodies[id] == object) ? id : int(BT_CONTACT_GRAPH_ROOT);
-	};
-	m_edgeOfManifold.resize(m_manifolds.size());
-	for (int i = 0; i < m_manifolds.size(); ++i)
-	{
-		const btPersistentManifold* m = m_manifolds[i];
-		const btVector3 up = m_settings.m_supportOrdering ? upOf(m) : btVector3(0, 0, 0);
-		m_edgeOfManifold[i] = m_graph.addManifold(m, nodeOf(m->getBody0()), nodeOf(m->getBody1()), i, up, m_settings.m_supportAngle);
-	}
-	// D8: joints are no edges. Fixating one end of a joint against the other clamps every body of
-	// a closed chain (a bridge anchored at both ends) between two fixated neighbours, which fight
-	// (measured: the hinge bridge never settles, 1.2 m/s after 10 s). Joint rows are swept in the
-	// global pass and in layer 0, where nothing is fixated; mechanisms without stacks are Bullet's.
-	m_edgeOfConstraint.resize(m_constraints.size());
-	for (int i = 0; i < m_constraints.size(); ++i) m_edgeOfConstraint[i] = -1;
-	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(-1);
-	m_graph.buildAdjacency();
-	m_layers.build(m_graph);
 }
 
 void btShockPropagationConstraintSolver::assignRowsToLayers()
@@ -409,97 +282,4 @@ void btShockPropagationConstraintSolver::limitWarmStart(const btContactSolverInf
 			if (cp.m_appliedImpulse > cap) cp.m_appliedImpulse = cap;
 		}
 	}
-}
-
-void btShockPropagationConstraintSolver::correctPositions(const btContactSolverInfo& info, bool fresh, bool layered)
-{
-	const int sweeps = sweepCount(m_settings.m_correctionIterations, info.m_numIterations);
-	if (sweeps <= 0 || m_bodies.size() == 0) return;
-	m_correction->reset(m_bodies.size(), m_layers.getNumLayers());
-	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
-	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
-	const btScalar dt = info.m_timeStep;
-	for (int i = 0; i < m_manifolds.size(); ++i)
-	{
-		const int edge = m_edgeOfManifold[i];
-		if (edge < 0) continue;
-		const btContactGraphEdge& e = m_graph.getEdge(edge);
-		const btPersistentManifold* m = m_manifolds[i];
-		const btCollisionObject* a = m->getBody0();
-		const btCollisionObject* b = m->getBody1();
-		// Slop (D6): fixed, or a share of the distance a body falls from rest in one step.
-		btScalar slop = m_settings.m_correctionSlop;
-		if (slop < btScalar(0))
-		{
-			const btVector3 up = upOf(m);
-			const btRigidBody* dynamic = btRigidBody::upcast(e.m_bodyA >= 0 ? a : b);
-			const btScalar g = (dynamic && !up.isZero()) ? dynamic->getGravity().length() : btScalar(0);
-			slop = m_settings.m_correctionSlopPerFall * g * dt * dt;
-		}
-		for (int j = 0; j < m->getNumContacts(); ++j)
-		{
-			const btManifoldPoint& cp = m->getContactPoint(j);
-			btVector3 pointA = cp.getPositionWorldOnA();
-			btVector3 pointB = cp.getPositionWorldOnB();
-			btScalar distance = cp.getDistance();
-			if (fresh)
-			{
-				// As Bullet's refreshContactPoints, without changing the manifold.
-				pointA = a->getWorldTransform() * cp.m_localPointA;
-				pointB = b->getWorldTransform() * cp.m_localPointB;
-				distance = (pointA - pointB).dot(cp.m_normalWorldOnB);
-			}
-			const btScalar depth = -distance - slop;
-			if (!(depth > btScalar(0))) continue;
-			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, m_settings.m_correctionFraction * depth,
-								   m_layers.getEdgeLayer(edge));
-		}
-	}
-	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
-	if (m_correction->getNumPoints() == 0) return;
-	m_correction->solve(sweeps, layered ? &m_layers : 0);
-	m_correction->apply();
-}
-
-void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds,
-														  int numManifolds, const btContactSolverInfo& info)
-{
-	BT_PROFILE("btShockPropagationConstraintSolver::correctAfterStep");
-	btClock clock;
-	filterInput(objects, numObjects, manifolds, numManifolds, 0, 0, false);
-	// Sleeping bodies are not moved: they are roots here, as static bodies are.
-	int kept = 0;
-	for (int i = 0; i < m_bodies.size(); ++i)
-		if (m_bodies[i]->isActive()) m_bodies[kept++] = m_bodies[i];
-	m_bodies.resize(kept);
-	buildGraph();
-	// Only stacked components are corrected (groups without stacks were Bullet's own solve).
-	bool anyStack = m_layers.getNumLayers() > 1 || m_settings.m_layerFlatGroups;
-	if (anyStack)
-	{
-		btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
-		tallest.resize(m_layers.getNumComponents());
-		for (int c = 0; c < tallest.size(); ++c) tallest[c] = 0;
-		for (int i = 0; i < m_bodies.size(); ++i)
-			tallest[m_layers.getComponent(i)] = btMax(tallest[m_layers.getComponent(i)], m_layers.getHeight(i));
-		int keptManifolds = 0;
-		btAlignedObjectArray<int>& keptEdges = m_keptEdges;
-		keptEdges.resize(0);
-		for (int i = 0; i < m_manifolds.size(); ++i)
-		{
-			const int edge = m_edgeOfManifold[i];
-			if (edge < 0) continue;
-			const btContactGraphEdge& e = m_graph.getEdge(edge);
-			const int node = e.m_bodyA >= 0 ? e.m_bodyA : e.m_bodyB;
-			if (!m_settings.m_layerFlatGroups && tallest[m_layers.getComponent(node)] <= 1) continue;
-			m_manifolds[keptManifolds] = m_manifolds[i];
-			keptEdges.push_back(edge);
-			++keptManifolds;
-		}
-		m_manifolds.resize(keptManifolds);
-		m_edgeOfManifold.resize(keptManifolds);
-		for (int i = 0; i < keptManifolds; ++i) m_edgeOfManifold[i] = keptEdges[i];
-		correctPositions(info, true, m_settings.m_layeredSecondCorrection);
-	}
-	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }

@@ -1,0 +1,116 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+// Position correction of the step (D6) and the world's second correction after the positions
+// advance (D4).
+
+#include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
+
+#include "btBodyChecks.h"
+#include "btPositionCorrection.h"
+
+using namespace btShockPropagationChecks;
+
+void btShockPropagationConstraintSolver::correctPositions(const btContactSolverInfo& info, bool fresh, bool layered)
+{
+	const int sweeps = sweepCount(m_settings.m_correctionIterations, info.m_numIterations);
+	if (sweeps <= 0 || m_bodies.size() == 0) return;
+	m_correction->reset(m_bodies.size(), m_layers.getNumLayers());
+	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
+	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
+	const btScalar dt = info.m_timeStep;
+	for (int i = 0; i < m_manifolds.size(); ++i)
+	{
+		const int edge = m_edgeOfManifold[i];
+		if (edge < 0) continue;
+		const btContactGraphEdge& e = m_graph.getEdge(edge);
+		const btPersistentManifold* m = m_manifolds[i];
+		const btCollisionObject* a = m->getBody0();
+		const btCollisionObject* b = m->getBody1();
+		// Slop (D6): fixed, or a share of the distance a body falls from rest in one step.
+		btScalar slop = m_settings.m_correctionSlop;
+		if (slop < btScalar(0))
+		{
+			const btVector3 up = upOf(m);
+			const btRigidBody* dynamic = btRigidBody::upcast(e.m_bodyA >= 0 ? a : b);
+			const btScalar g = (dynamic && !up.isZero()) ? dynamic->getGravity().length() : btScalar(0);
+			slop = m_settings.m_correctionSlopPerFall * g * dt * dt;
+		}
+		for (int j = 0; j < m->getNumContacts(); ++j)
+		{
+			const btManifoldPoint& cp = m->getContactPoint(j);
+			btVector3 pointA = cp.getPositionWorldOnA();
+			btVector3 pointB = cp.getPositionWorldOnB();
+			btScalar distance = cp.getDistance();
+			if (fresh)
+			{
+				// As Bullet's refreshContactPoints, without changing the manifold.
+				pointA = a->getWorldTransform() * cp.m_localPointA;
+				pointB = b->getWorldTransform() * cp.m_localPointB;
+				distance = (pointA - pointB).dot(cp.m_normalWorldOnB);
+			}
+			const btScalar depth = -distance - slop;
+			if (!(depth > btScalar(0))) continue;
+			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, m_settings.m_correctionFraction * depth,
+								   m_layers.getEdgeLayer(edge));
+		}
+	}
+	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
+	if (m_correction->getNumPoints() == 0) return;
+	m_correction->solve(sweeps, layered ? &m_layers : 0);
+	m_correction->apply();
+}
+
+void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds,
+														  int numManifolds, const btContactSolverInfo& info)
+{
+	BT_PROFILE("btShockPropagationConstraintSolver::correctAfterStep");
+	btClock clock;
+	filterInput(objects, numObjects, manifolds, numManifolds, 0, 0, false);
+	// Sleeping bodies are not moved: they are roots here, as static bodies are.
+	int kept = 0;
+	for (int i = 0; i < m_bodies.size(); ++i)
+		if (m_bodies[i]->isActive()) m_bodies[kept++] = m_bodies[i];
+	m_bodies.resize(kept);
+	buildGraph();
+	// Only stacked components are corrected (groups without stacks were Bullet's own solve).
+	bool anyStack = m_layers.getNumLayers() > 1 || m_settings.m_layerFlatGroups;
+	if (anyStack)
+	{
+		btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
+		tallest.resize(m_layers.getNumComponents());
+		for (int c = 0; c < tallest.size(); ++c) tallest[c] = 0;
+		for (int i = 0; i < m_bodies.size(); ++i)
+			tallest[m_layers.getComponent(i)] = btMax(tallest[m_layers.getComponent(i)], m_layers.getHeight(i));
+		int keptManifolds = 0;
+		btAlignedObjectArray<int>& keptEdges = m_keptEdges;
+		keptEdges.resize(0);
+		for (int i = 0; i < m_manifolds.size(); ++i)
+		{
+			const int edge = m_edgeOfManifold[i];
+			if (edge < 0) continue;
+			const btContactGraphEdge& e = m_graph.getEdge(edge);
+			const int node = e.m_bodyA >= 0 ? e.m_bodyA : e.m_bodyB;
+			if (!m_settings.m_layerFlatGroups && tallest[m_layers.getComponent(node)] <= 1) continue;
+			m_manifolds[keptManifolds] = m_manifolds[i];
+			keptEdges.push_back(edge);
+			++keptManifolds;
+		}
+		m_manifolds.resize(keptManifolds);
+		m_edgeOfManifold.resize(keptManifolds);
+		for (int i = 0; i < keptManifolds; ++i) m_edgeOfManifold[i] = keptEdges[i];
+		correctPositions(info, true, m_settings.m_layeredSecondCorrection);
+	}
+	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
+}
