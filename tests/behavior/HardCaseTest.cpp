@@ -183,7 +183,7 @@ TEST(HardCaseShock, MassRatioTowerOfRatio1000Stands)
 
 TEST(HardCaseShock, BfsLayersWithoutSupportOrderingJamTheDoor)
 {
-	// The failure the support ordering exists for (algorithm.md 2.4): with plain BFS layers the
+	// The failure the support ordering exists for (docs/design.md, D12): with plain BFS layers the
 	// right column's top box is clamped between the fixated lintel and the fixated box below it.
 	SceneRun run("door", spec::shock());
 	btShockPropagationSettings settings = run.sim->shockSolver()->getSettings();

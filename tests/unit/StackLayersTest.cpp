@@ -1,4 +1,4 @@
-// Graph and layer specs on hand-built inputs, with no Bullet world (algorithm.md section 2).
+// Graph and layer specs on hand-built inputs, with no Bullet world (docs/design.md, section 2).
 #include <BulletShockPropagation/btStackLayers.h>
 
 #include <gtest/gtest.h>
@@ -196,7 +196,7 @@ TEST(StackLayers, JointEdgeIsSolvedInTheLayerOfItsEdge)
 	EXPECT_EQ(g.fixatedBodies(2), std::set<int>({1}));
 }
 
-// The door of algorithm.md 2.4: left column 0-1, right column 2-3-4-5, lintel 6 on 1 and 5.
+// The door of docs/design.md (D12): left column 0-1, right column 2-3-4-5, lintel 6 on 1 and 5.
 // Every edge is a support edge: the first body rests on the second.
 namespace
 {

@@ -15,7 +15,7 @@ constexpr double kGroundHalfWidth = 50.0;
 constexpr double kStackSpacing = 3.0;
 /// Region loose bodies, new bodies and teleports are placed in (m): |x| <= 5, 0.2 <= y <= 4, |z| <= 3.
 constexpr double kRegionHalfX = 5.0, kRegionLowY = 0.2, kRegionHighY = 4.0, kRegionHalfZ = 3.0;
-/// Initial overlap of resting bodies (m), as in every registry scene (bullet-notes.md).
+/// Initial overlap of resting bodies (m), as in every registry scene (docs/bullet-facts.md).
 constexpr double kRestOverlap = 1e-5;
 /// Largest share of a box's height that a "sunk" stack box starts inside the one below.
 constexpr double kMaxSinkFraction = 0.45;

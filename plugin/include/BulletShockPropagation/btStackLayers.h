@@ -17,14 +17,14 @@ subject to the following restrictions:
 
 #include "btContactGraph.h"
 
-/// Stack layers of a contact graph (Erleben 2007, "Stack layers"; algorithm.md section 2).
+/// Stack layers of a contact graph (Erleben 2007, "Stack layers"; docs/design.md, section 2).
 ///
 /// Definitions, for one connected component of the graph (components are found here, because
 /// Bullet merges small islands into one solveGroup call):
 ///  - roots (static and kinematic bodies, BT_CONTACT_GRAPH_ROOT) have height 0;
 ///  - BFS height of a node = distance in edges from the nearest root (multi-source BFS), as in
 ///    Erleben 2007;
-///  - support ordering (algorithm.md 2.5, option iii in the spirit of Guendelman 2003): a body
+///  - support ordering (D12 in docs/design.md, in the spirit of Guendelman 2003): a body
 ///    that rests on another (btContactGraphEdge::m_support, from the contact normal against
 ///    gravity) must sit higher than it. Heights are raised along the support edges by a longest
 ///    path in topological order: h(u) = max(h_BFS(u), max over supports s of h(s) + 1). Without
@@ -36,7 +36,7 @@ subject to the following restrictions:
 ///  - layer k solves its edges with the bodies of height k+1 free and the other ends (height
 ///    <= k) fixated (infinite mass); k = 0, 1, ..., K-1 bottom-up. A body of height h >= 1 is free
 ///    in exactly one layer (h-1), so gravity and the position update reach it once.
-///    Example (the door of algorithm.md 2.4): a lintel on a column of 2 boxes and one of 4 gets
+///    Example (the door of docs/design.md, D12): a lintel on a column of 2 boxes and one of 4 gets
 ///    height 5, above both column tops, so it is free only after both columns are solved, and
 ///    no body is clamped between two fixated ones.
 ///  - A component without a root (a falling cluster, decision D9) has no heights

@@ -20,7 +20,7 @@ enum class SolverKind
 	StockSI,          ///< btSequentialImpulseConstraintSolver, Bullet defaults
 	StockSI2Friction, ///< the same with SOLVER_USE_2_FRICTION_DIRECTIONS
 	NNCG,             ///< btNNCGConstraintSolver
-	MLCPDantzig,      ///< btMLCPSolver + btDantzigSolver, m_globalCfm = 1e-4 (bullet-notes.md)
+	MLCPDantzig,      ///< btMLCPSolver + btDantzigSolver, m_globalCfm = 1e-4 (docs/bullet-facts.md)
 	ShockWorld,       ///< btShockPropagationDynamicsWorld (full algorithm)
 	ShockSolverOnly   ///< btShockPropagationConstraintSolver in a stock btDiscreteDynamicsWorld
 };
