@@ -240,14 +240,55 @@ bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
 	return any;
 }
 
-int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools)
+int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackSpeed,
+									 int* rejected)
 {
 	int total = 0;
 	for (int k = m_numLayers - 1; k >= 0; --k)
 	{
+		// The layer's free bodies before their load arrives (to judge and, if need be, undo the re-solve).
+		const int numFree = k < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(k) : 0;
+		m_before.resize(numFree);
+		for (int i = 0; i < numFree; ++i)
+		{
+			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
+			if (id < 0) continue;
+			btSolverBody& b = pools.m_bodies[id];
+			m_before[i].m_deltaLinear = b.internalGetDeltaLinearVelocity();
+			m_before[i].m_deltaAngular = b.internalGetDeltaAngularVelocity();
+		}
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
-		solveLayer(k, sweeps, params, true, pools);
+		fixate(k, params, pools);
+		for (int iteration = 0; iteration < sweeps; ++iteration) sweep(k, iteration, pools);
 		total += sweeps;
+		// A load from above is carried by the layer's supports: it cannot leave a body moving
+		// faster than before it arrived. If it does, the layer could not carry it within its
+		// sweeps (D13 guard): the layer keeps its state from before the load and hands nothing on.
+		bool carried = true;
+		for (int i = 0; i < numFree && carried; ++i)
+		{
+			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
+			if (id < 0) continue;
+			btSolverBody& b = pools.m_bodies[id];
+			const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
+			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
+			const btScalar before = (base + m_before[i].m_deltaLinear).length();
+			carried = after <= before + slackSpeed;
+		}
+		if (!carried)
+		{
+			int row = 0;
+			visitLayerRows(k, pools, [&](btSolverConstraint& c, btSolverRowKind) { c.m_appliedImpulse = m_impulseBefore[row++]; });
+			for (int i = 0; i < numFree; ++i)
+			{
+				const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
+				if (id < 0) continue;
+				pools.m_bodies[id].internalGetDeltaLinearVelocity() = m_before[i].m_deltaLinear;
+				pools.m_bodies[id].internalGetDeltaAngularVelocity() = m_before[i].m_deltaAngular;
+			}
+			if (rejected) ++*rejected;
+		}
+		release(k, true, pools);  // a rejected layer's rows changed nothing: nothing is withheld
 	}
 	return total;
 }

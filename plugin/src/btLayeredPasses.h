@@ -64,7 +64,10 @@ public:
 	/// D13, top-down: the free bodies of each layer receive what the layers above withheld from
 	/// them, then the layer is re-solved with its own lower bodies fixated (withholding in turn).
 	/// Returns the number of sweeps run.
-	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools);
+	/// Guard: a layer whose re-solve leaves a free body faster than before its load arrived (by
+	/// more than slackSpeed, m/s) could not carry the load; it keeps its state from before and
+	/// hands nothing on (counted in *rejected).
+	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackSpeed, int* rejected);
 
 	/// Sum over rows of |impulse change| in the layer passes (N s), for statistics.
 	btScalar getLayerImpulse() const { return m_layerImpulse; }
@@ -93,6 +96,12 @@ private:
 	btAlignedObjectArray<btVector3> m_savedInvMass;       // per fixated body of the layer
 	btAlignedObjectArray<btFixationBackup> m_backups;     // per row of the layer with a fixated end
 	btAlignedObjectArray<btScalar> m_impulseBefore;       // per row of the layer: impulse at the pass start
+	struct btBodyDelta
+	{
+		btVector3 m_deltaLinear;
+		btVector3 m_deltaAngular;
+	};
+	btAlignedObjectArray<btBodyDelta> m_before;           // weight pass: free bodies before their load
 
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
 	btScalar m_layerImpulse = 0;

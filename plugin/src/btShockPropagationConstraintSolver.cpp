@@ -242,7 +242,10 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	if (weightFeeling)
 	{
 		clock.reset();
-		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(m_settings.m_weightIterations, params, pools);
+		// The guard's slack: a share of the speed gravity gives in one step.
+		const btScalar g = m_bodies.size() ? btRigidBody::upcast(m_bodies[0])->getGravity().length() : btScalar(0);
+		const btScalar slack = m_settings.m_weightGuardSlack * g * info.m_timeStep;
+		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(m_settings.m_weightIterations, params, pools, slack, &m_stats.m_numWeightRejections);
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 

@@ -110,16 +110,6 @@ TEST_P(WeightFeeling, LintelOnEqualColumnsPutsHalfItsWeightOnEach)
 
 TEST_P(WeightFeeling, PlankSharesAnOffCentreLoadByTheLeverRule)
 {
-	if (GetParam().solver.weighting == 0.0)
-	{
-		// Known limitation since the one-setup step (docs/design.md, D13), left for the physics-truth
-		// issue: at f = 0 nothing solves the plank and its two thin posts together, the friction
-		// PGS puts between the plank and the fixated posts (a squeeze, which statics leaves
-		// undetermined) is handed down to the posts as a push at their tops, and they tip
-		// (measured: 47 cm in 3 s; f = 0.5 holds, 0.01 cm). The old guard that rejected such a
-		// re-solve is gone (issue 15 asks for alternating sweeps instead).
-		GTEST_SKIP() << "weight feeling at f = 0 tips the loaded plank's thin posts (known, docs/design.md D13)";
-	}
 	SceneRun run("loaded_plank", GetParam().solver);
 	const btRigidBody* plank = run.named("plank");
 	const double rightShare = run.scene->facts.at("rightShare");
