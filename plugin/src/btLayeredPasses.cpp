@@ -219,6 +219,39 @@ void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationPar
 	release(layer, withhold, pools);
 }
 
+void btLayeredPasses::withholdWarmStartFromLowerEnds(const btSolverPools& pools)
+{
+	for (int layer = 0; layer < m_numLayers && layer < m_layers->getNumLayers(); ++layer)
+	{
+		for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+		{
+			const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+			if (id >= 0) m_fixated[id] = 1;
+		}
+		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+			const btScalar impulse = c.m_appliedImpulse;
+			if (impulse == btScalar(0)) return;
+			const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
+			const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
+			if (fixA == fixB) return;
+			const int id = fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB;
+			btSolverBody& body = pools.m_bodies[id];
+			// Undo what Bullet's setup applied to this end, and keep it for the weight pass.
+			if (fixA) body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, -impulse);
+			else body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, -impulse);
+			const int node = m_nodeOfSolverBody[id];
+			if (node >= 0)
+				m_withheld.add(node, (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * impulse,
+							   (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * impulse);
+		});
+		for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+		{
+			const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+			if (id >= 0) m_fixated[id] = 0;
+		}
+	}
+}
+
 bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
 {
 	// The free bodies of the layer get the impulses the layers above withheld from them.

@@ -61,6 +61,14 @@ public:
 	/// keeps from the lower bodies, for solveWeightPass.
 	void solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools);
 
+	/// Before the layer passes, for Erleben's classic method (f = 0, no weight feeling): Bullet's
+	/// warm start applied each row's impulse to both ends at setup; take it back from the row's
+	/// lower (fixated) end, so a layer's warm start moves its free bodies only, as the layer pass
+	/// itself does: a lower body does not feel the layers above it. (Measured: with the warm start
+	/// on both ends and no global pass to balance it, the round tower fell within 0.23 s, the wall
+	/// within 0.67 s and the 1000:1 tower within 0.37 s; docs/design.md, D5.)
+	void withholdWarmStartFromLowerEnds(const btSolverPools& pools);
+
 	/// D13, top-down: the free bodies of each layer receive what the layers above withheld from
 	/// them, then the layer is re-solved with its own lower bodies fixated (withholding in turn).
 	/// Returns the number of sweeps run.

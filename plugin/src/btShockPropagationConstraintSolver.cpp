@@ -237,6 +237,11 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	params.m_jointDamping = info.m_damping;
 	params.m_inelasticFixation = m_settings.m_inelasticFixation;
 	const bool weightFeeling = m_settings.m_weightFeeling;
+	// f = 0 without weight feeling is Erleben's classic method: no body feels the layers above it,
+	// so Bullet's warm start moves only a row's free end (D5). With a global pass or weight
+	// feeling the warm start is last step's coupled solution, their head start.
+	if (globalSweeps == 0 && !weightFeeling && (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING))
+		m_passes->withholdWarmStartFromLowerEnds(pools);
 	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_passes->solveLayer(k, layerSweeps, params, weightFeeling, pools);
 	m_stats.m_timeLayersMs += millisecondsSince(clock);
 	if (weightFeeling)
