@@ -145,7 +145,7 @@ struct btShockPropagationSettings
 	/// resting on a light one leaves its own weight there, which flings the light body when their
 	/// roles change (D5, measured in docs/design.md). Equal masses (every registry scene) keep up
 	/// to this many bodies' weight.
-	btScalar m_warmStartWeights = btScalar(64);
+	btScalar m_warmStartWeights = btScalar(16);
 
 	/// Weight feeling (D13, in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
 	/// 2025): after the bottom-up layer pass, a top-down pass hands each layer's impulses, which
