@@ -51,24 +51,10 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	bucket(m_numLayers, numContacts, numContacts ? &layerOf[0] : 0, m_contactStart, m_contactRows, m_scratchCursor);
 
 	// Friction and rolling friction rows follow their contact row (m_frictionIndex).
-	btAlignedObjectArray<int>& followLayer = m_scratchFollow;
-	const int numFrictions = pools.m_frictions.size();
-	followLayer.resize(numFrictions);
-	for (int i = 0; i < numFrictions; ++i)
-	{
-		const int contact = pools.m_frictions[i].m_frictionIndex;
-		followLayer[i] = (contact >= 0 && contact < numContacts) ? layerOf[contact] : 0;
-	}
-	bucket(m_numLayers, numFrictions, numFrictions ? &followLayer[0] : 0, m_frictionStart, m_frictionRows, m_scratchCursor);
-	const int numRolling = pools.m_rollingFrictions.size();
-	followLayer.resize(numRolling);
-	for (int i = 0; i < numRolling; ++i)
-	{
-		const int contact = pools.m_rollingFrictions[i].m_frictionIndex;
-		followLayer[i] = (contact >= 0 && contact < numContacts) ? layerOf[contact] : 0;
-	}
-	bucket(m_numLayers, numRolling, numRolling ? &followLayer[0] : 0, m_rollingStart, m_rollingRows, m_scratchCursor);
+	bucketFollowers(pools.m_frictions, layerOf, m_frictionStart, m_frictionRows);
+	bucketFollowers(pools.m_rollingFrictions, layerOf, m_rollingStart, m_rollingRows);
 
+	btAlignedObjectArray<int>& followLayer = m_scratchFollow;
 	const int numJoints = pools.m_joints.size();
 	followLayer.resize(numJoints);
 	for (int i = 0; i < numJoints; ++i) followLayer[i] = clampLayer(jointRowLayer[i], m_numLayers);
@@ -90,6 +76,20 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	}
 	m_withheld.reset(solverBodyOfNode.size());
 	m_layerImpulse = 0;
+}
+
+void btLayeredPasses::bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
+									 btAlignedObjectArray<int>& sorted)
+{
+	btAlignedObjectArray<int>& followLayer = m_scratchFollow;
+	const int numRows = rows.size();
+	followLayer.resize(numRows);
+	for (int i = 0; i < numRows; ++i)
+	{
+		const int contact = rows[i].m_frictionIndex;
+		followLayer[i] = (contact >= 0 && contact < contactLayer.size()) ? contactLayer[contact] : 0;
+	}
+	bucket(m_numLayers, numRows, numRows ? &followLayer[0] : 0, start, sorted, m_scratchCursor);
 }
 
 template <class Visit>

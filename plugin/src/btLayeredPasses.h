@@ -84,6 +84,9 @@ private:
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);
 	void sweep(int layer, int iteration, const btSolverPools& pools);
+	/// Friction or rolling-friction rows into the layers of their contact rows.
+	void bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
+						 btAlignedObjectArray<int>& sorted);
 	bool receiveWithheld(int layer, const btSolverPools& pools);
 
 	template <class Visit>
