@@ -159,12 +159,10 @@ INSTANTIATE_TEST_SUITE_P(Modes, WeightFeeling,
 										   Mode{solverOnlyWeightFeeling(), "SolverOnly"}),
 						 modeName);
 
-// Without the mode the same statics fail: the tests above can fail. (At f = 0 the ground still
-// carries part of the tower through Bullet's warm start, which applies last step's impulses to
-// both bodies of every row: measured 0.54 of the weight since the one-setup step, 0.36 before.)
+// Without the mode the same statics fail: the tests above can fail (measured 0.10 of the weight).
 TEST(WithoutWeightFeeling, GroundCarriesOnlyPartOfTheTower)
 {
 	SceneRun run("tower", spec::shock(10, 0.0), {{"n", 10}});
 	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
-	EXPECT_LT(ground, 0.8) << "f = 0 fixation withholds the weight of the boxes above";
+	EXPECT_LT(ground, 0.5) << "f = 0 fixation withholds the weight of the boxes above";
 }
