@@ -34,7 +34,6 @@ struct Options
 	bool globalSecondCorrection = false;
 	std::vector<double> slops{-1};
 	bool supportOrdering = true;
-	bool stopApproach = true;
 	int weightSweeps = -1;
 	bool seed = false;
 };
@@ -62,7 +61,6 @@ void usage()
 				 "  --global-correction   plugin: the paper's un-layered second correction\n"
 				 "  --slop M,N,...        plugin: correction slop values in metres (default: 0.18 g dt^2)\n"
 				 "  --bfs-layers          plugin: plain BFS layers, no support ordering (D12 off)\n"
-				 "  --no-stop-approach    plugin: position-only second correction (D11 off)\n"
 				 "  --weight-sweeps N     plugin with weight feeling (sp-wf): sweeps per loaded layer (default 40)\n"
 				 "  --no-progress         no progress bar\n"
 				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
@@ -94,7 +92,6 @@ Options parseArguments(int argc, char** argv)
 		else if (a == "--global-correction") o.globalSecondCorrection = true;
 		else if (a == "--slop") o.slops = harness::parseNumberList(value(), "slop");
 		else if (a == "--bfs-layers") o.supportOrdering = false;
-		else if (a == "--no-stop-approach") o.stopApproach = false;
 		else if (a == "--weight-sweeps")
 		{
 			const std::vector<int> n = harness::parseIntegerList(value(), "weight-sweeps");
@@ -164,7 +161,6 @@ std::vector<harness::SolverSpec> expand(const Options& o)
 					s.globalSecondCorrection = o.globalSecondCorrection;
 					s.correctionSlop = o.slops[j];
 					s.supportOrdering = o.supportOrdering;
-					s.stopApproach = o.stopApproach;
 					s.weightIterations = o.weightSweeps;
 					specs.push_back(s);
 				}

@@ -124,7 +124,6 @@ std::string SolverSpec::label() const
 		if (globalSecondCorrection) out << " globalcorr";
 		if (correctionSlop >= 0) out << " slop=" << correctionSlop;
 		if (!supportOrdering) out << " bfs";
-		if (!stopApproach) out << " nostop";
 		if (weightFeeling && weightIterations > 0) out << " sweeps=" << weightIterations;
 	}
 	return out.str();

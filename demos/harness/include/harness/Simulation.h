@@ -33,9 +33,8 @@ struct SolverSpec
 	int substeps = 1;     ///< sub-steps per frame (stepSimulation with dt / substeps)
 	int fixationMode = -1;          ///< plugin only: btShockPropagationFixationMode, -1 = default
 	bool globalSecondCorrection = false;  ///< plugin only: the paper's un-layered second correction
-	double correctionSlop = -1;      ///< plugin only: m_correctionSlop in metres, -1 = default
+	double correctionSlop = -1;      ///< plugin only: m_correctionSlop in metres, -1 = default (0.18 g dt^2)
 	bool supportOrdering = true;     ///< plugin only: m_supportOrdering (D12)
-	bool stopApproach = true;        ///< plugin only: m_correctionStopsApproach (D11)
 	bool weightFeeling = false;      ///< plugin only: m_weightFeeling (D13); names sp-wf, sp-solver-wf
 	int weightIterations = -1;       ///< plugin only: m_weightIterations, -1 = default
 	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp"
