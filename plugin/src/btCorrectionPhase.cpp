@@ -26,7 +26,9 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 {
 	const int sweeps = sweepCount(m_settings.m_correctionIterations, info.m_numIterations);
 	if (sweeps <= 0 || m_bodies.size() == 0) return;
-	m_correction->reset(m_bodies.size(), m_layers.getNumLayers());
+	int numPoints = 0;
+	for (int i = 0; i < m_manifolds.size(); ++i) numPoints += m_manifolds[i]->getNumContacts();
+	m_correction->reset(m_bodies.size(), m_layers.getNumLayers(), numPoints);
 	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	const btScalar dt = info.m_timeStep;

@@ -18,7 +18,7 @@ subject to the following restrictions:
 #include "BulletShockPropagation/btStackLayers.h"
 #include "LinearMath/btTransformUtil.h"
 
-void btPositionCorrection::reset(int numBodies, int numLayers)
+void btPositionCorrection::reset(int numBodies, int numLayers, int numPoints)
 {
 	Body empty;
 	empty.m_body = 0;
@@ -36,6 +36,8 @@ void btPositionCorrection::reset(int numBodies, int numLayers)
 		m_fixated[i] = 0;
 	}
 	m_points.resize(0);
+	if (m_points.capacity() < numPoints) m_points.reserve(numPoints);
+	if (m_sorted.capacity() < numPoints) m_sorted.reserve(numPoints);
 	m_numLayers = btMax(1, numLayers);
 }
 
@@ -60,8 +62,6 @@ void btPositionCorrection::addPoint(int nodeA, int nodeB, const btVector3& point
 	p.m_normal = normalOnB;
 	p.m_armA = p.m_bodyA >= 0 ? pointOnA - m_bodies[p.m_bodyA].m_body->getCenterOfMassPosition() : btVector3(0, 0, 0);
 	p.m_armB = p.m_bodyB >= 0 ? pointOnB - m_bodies[p.m_bodyB].m_body->getCenterOfMassPosition() : btVector3(0, 0, 0);
-	p.m_crossA = p.m_armA.cross(normalOnB);
-	p.m_crossB = p.m_armB.cross(normalOnB);
 	p.m_target = target;
 	p.m_lambda = btScalar(0);
 	p.m_layer = (layer >= 0 && layer < m_numLayers) ? layer : 0;
@@ -71,7 +71,9 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 {
 	for (int i = begin; i < end; ++i)
 	{
-		Point& p = m_sorted[i];
+		Point& p = m_points[m_sorted[i]];
+		const btVector3 crossA = p.m_armA.cross(p.m_normal);
+		const btVector3 crossB = p.m_armB.cross(p.m_normal);
 		// Separation gained so far along the normal: n . (dx_A + dtheta_A x r_A - dx_B - dtheta_B x r_B).
 		btScalar gained = btScalar(0);
 		btScalar inverseMass = btScalar(0);
@@ -81,21 +83,21 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 		if (p.m_bodyA >= 0)
 		{
 			const Body& a = m_bodies[p.m_bodyA];
-			gained += p.m_normal.dot(a.m_shift) + p.m_crossA.dot(a.m_turn);
+			gained += p.m_normal.dot(a.m_shift) + crossA.dot(a.m_turn);
 			if (moveA)
 			{
-				angularA = (a.m_invInertia * p.m_crossA) * a.m_angularFactor;
-				inverseMass += a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + p.m_crossA.dot(angularA);
+				angularA = (a.m_invInertia * crossA) * a.m_angularFactor;
+				inverseMass += a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + crossA.dot(angularA);
 			}
 		}
 		if (p.m_bodyB >= 0)
 		{
 			const Body& b = m_bodies[p.m_bodyB];
-			gained -= p.m_normal.dot(b.m_shift) + p.m_crossB.dot(b.m_turn);
+			gained -= p.m_normal.dot(b.m_shift) + crossB.dot(b.m_turn);
 			if (moveB)
 			{
-				angularB = (b.m_invInertia * p.m_crossB) * b.m_angularFactor;
-				inverseMass += b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + p.m_crossB.dot(angularB);
+				angularB = (b.m_invInertia * crossB) * b.m_angularFactor;
+				inverseMass += b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + crossB.dot(angularB);
 			}
 		}
 		if (!(inverseMass > SIMD_EPSILON)) continue;
@@ -130,7 +132,7 @@ void btPositionCorrection::solve(int sweeps, const btStackLayers* layers)
 	m_sorted.resize(m_points.size());
 	m_cursor.resize(numLayers);
 	for (int k = 0; k < numLayers; ++k) m_cursor[k] = m_layerStart[k];
-	for (int i = 0; i < m_points.size(); ++i) m_sorted[m_cursor[layers ? m_points[i].m_layer : 0]++] = m_points[i];
+	for (int i = 0; i < m_points.size(); ++i) m_sorted[m_cursor[layers ? m_points[i].m_layer : 0]++] = i;
 	for (int k = 0; k < numLayers; ++k)
 	{
 		const int begin = m_layerStart[k], end = m_layerStart[k + 1];

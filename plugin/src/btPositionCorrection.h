@@ -34,7 +34,9 @@ class btStackLayers;
 class btPositionCorrection
 {
 public:
-	void reset(int numBodies, int numLayers);
+	/// Forget the points; numPoints is an upper bound of the points to come (storage is reserved
+	/// for it once, so a settling scene does not grow it step by step).
+	void reset(int numBodies, int numLayers, int numPoints);
 	/// Node i is the rigid body rb (dynamic, finite mass).
 	void setBody(int node, btRigidBody* rb);
 	/// One contact point: world positions on A and B, normal on B (pointing from B to A), the
@@ -54,7 +56,6 @@ private:
 		int m_bodyA, m_bodyB;
 		btVector3 m_normal;         // on B, from B to A
 		btVector3 m_armA, m_armB;   // contact point minus centre of mass
-		btVector3 m_crossA, m_crossB;  // arm x normal
 		btScalar m_target;
 		btScalar m_lambda;
 		int m_layer;
@@ -71,7 +72,7 @@ private:
 
 	btAlignedObjectArray<Body> m_bodies;
 	btAlignedObjectArray<Point> m_points;
-	btAlignedObjectArray<Point> m_sorted;
+	btAlignedObjectArray<int> m_sorted;  // point indices by layer
 	btAlignedObjectArray<int> m_layerStart;
 	btAlignedObjectArray<int> m_cursor;
 	btAlignedObjectArray<char> m_fixated;
