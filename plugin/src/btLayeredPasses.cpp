@@ -14,6 +14,7 @@ subject to the following restrictions:
 
 #include "btLayeredPasses.h"
 
+#include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletShockPropagation/btStackLayers.h"
 
 namespace
@@ -74,7 +75,7 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		const int id = solverBodyOfNode[node];
 		if (id >= 0 && id < numSolverBodies) m_nodeOfSolverBody[id] = node;
 	}
-	m_withheld.reset(solverBodyOfNode.size());
+	m_withheld.reset(solverBodyOfNode.size(), pools.m_contacts.size());
 	m_layerImpulse = 0;
 }
 
@@ -149,13 +150,14 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		pools.m_bodies[id].internalSetInvMass(m_savedInvMass[saved++]);
 	}
 	int row = 0, backup = 0;
-	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind kind) {
 		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
 		m_layerImpulse += btFabs(change);
 		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
 		if (!fixA && !fixB) return;
 		btRestoreRow(c, m_backups[backup++]);
+		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
 		if (!withhold || change == btScalar(0)) return;
 		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
 		const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
@@ -219,8 +221,11 @@ void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationPar
 	release(layer, withhold, pools);
 }
 
-void btLayeredPasses::withholdWarmStartFromLowerEnds(const btSolverPools& pools)
+void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScalar warmstartingFactor, btScalar coupling)
 {
+	// Bullet's setup applied each contact row's warm start, factor x T, to both ends. Last step,
+	// the lower end felt only F of T (the share stored in the point, btWithheldReactions): take
+	// (1 - coupling) of the rest back from it and hold it back again, as the layer passes would.
 	for (int layer = 0; layer < m_numLayers && layer < m_layers->getNumLayers(); ++layer)
 	{
 		for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
@@ -228,27 +233,45 @@ void btLayeredPasses::withholdWarmStartFromLowerEnds(const btSolverPools& pools)
 			const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
 			if (id >= 0) m_fixated[id] = 1;
 		}
-		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
-			const btScalar impulse = c.m_appliedImpulse;
-			if (impulse == btScalar(0)) return;
+		for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i)
+		{
+			const int rowIndex = m_contactRows[i];
+			btSolverConstraint& c = pools.m_contacts[rowIndex];
+			const btScalar warm = c.m_appliedImpulse;
+			if (!(warm > btScalar(0))) continue;
 			const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 			const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
-			if (fixA == fixB) return;
+			if (fixA == fixB) continue;
+			const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
+			const btScalar felt = btMin(warm, btMax(btScalar(0), warmstartingFactor * btWithheldReactions::feltShare(*cp)));
+			const btScalar unfelt = (warm - felt) * (btScalar(1) - coupling);
+			if (!(unfelt > btScalar(0))) continue;
 			const int id = fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB;
 			btSolverBody& body = pools.m_bodies[id];
-			// Undo what Bullet's setup applied to this end, and keep it for the weight pass.
-			if (fixA) body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, -impulse);
-			else body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, -impulse);
+			if (fixA) body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, -unfelt);
+			else body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, -unfelt);
 			const int node = m_nodeOfSolverBody[id];
 			if (node >= 0)
-				m_withheld.add(node, (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * impulse,
-							   (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * impulse);
-		});
+				m_withheld.add(node, (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * unfelt,
+							   (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * unfelt);
+			m_withheld.holdBack(rowIndex, unfelt);
+		}
 		for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
 		{
 			const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
 			if (id >= 0) m_fixated[id] = 0;
 		}
+	}
+}
+
+void btLayeredPasses::storeFeltShares(const btSolverPools& pools, bool delivered)
+{
+	for (int i = 0; i < pools.m_contacts.size(); ++i)
+	{
+		const btSolverConstraint& c = pools.m_contacts[i];
+		btManifoldPoint* cp = static_cast<btManifoldPoint*>(c.m_originalContactPoint);
+		const btScalar total = c.m_appliedImpulse;
+		btWithheldReactions::setFeltShare(*cp, delivered ? total : btMax(btScalar(0), total - m_withheld.heldBack(i)));
 	}
 }
 

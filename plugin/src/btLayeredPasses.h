@@ -61,13 +61,15 @@ public:
 	/// keeps from the lower bodies, for solveWeightPass.
 	void solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools);
 
-	/// Before the layer passes, for Erleben's classic method (f = 0, no weight feeling): Bullet's
-	/// warm start applied each row's impulse to both ends at setup; take it back from the row's
-	/// lower (fixated) end, so a layer's warm start moves its free bodies only, as the layer pass
-	/// itself does: a lower body does not feel the layers above it. (Measured: with the warm start
-	/// on both ends and no global pass to balance it, the round tower fell within 0.23 s, the wall
-	/// within 0.67 s and the 1000:1 tower within 0.37 s; docs/design.md, D5.)
-	void withholdWarmStartFromLowerEnds(const btSolverPools& pools);
+	/// After setup, before any pass: Bullet's warm start applied each contact row's cached total T
+	/// to both ends; the lower (fixated) end felt only the share F of it last step (the global
+	/// pass's share, or all of it when the weight pass handed it down). Take (1 - coupling) of the
+	/// rest back from the lower end and hold it back: coupling 0 restarts from the state last step
+	/// ended in, 1 is Bullet's coupled warm start (D5).
+	void withholdUnfeltWarmStart(const btSolverPools& pools, btScalar warmstartingFactor, btScalar coupling);
+	/// After the passes: store each contact point's felt share F for the next step's warm start
+	/// (delivered: the weight pass handed every held-back impulse down, so F = T).
+	void storeFeltShares(const btSolverPools& pools, bool delivered);
 
 	/// D13, top-down: the free bodies of each layer receive what the layers above withheld from
 	/// them, then the layer is re-solved with its own lower bodies fixated (withholding in turn).

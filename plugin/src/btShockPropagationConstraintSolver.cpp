@@ -23,6 +23,7 @@ subject to the following restrictions:
 #include "LinearMath/btQuickprof.h"
 #include "btBodyChecks.h"
 #include "btLayeredPasses.h"
+#include "btWithheldReactions.h"
 #include "btPositionCorrection.h"
 
 #include <cmath>
@@ -74,6 +75,8 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 		m_settings.m_correctionSlopPerFall = defaults.m_correctionSlopPerFall;
 	m_settings.m_weightIterations = btMax(1, settings.m_weightIterations);
 	if (!isFiniteScalar(settings.m_supportAngle)) m_settings.m_supportAngle = defaults.m_supportAngle;
+	if (!(settings.m_warmStartCoupling >= 0 && settings.m_warmStartCoupling <= 1)) m_settings.m_warmStartCoupling = defaults.m_warmStartCoupling;
+	if (!(settings.m_warmStartWeights >= 0)) m_settings.m_warmStartWeights = defaults.m_warmStartWeights;
 }
 
 int btShockPropagationConstraintSolver::sweepCount(int setting, int worldIterations) const
@@ -134,6 +137,13 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 		btSequentialImpulseConstraintSolver::solveGroup(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(),
 														m_manifolds.size() ? &m_manifolds[0] : 0, m_manifolds.size(),
 														m_constraints.size() ? &m_constraints[0] : 0, m_constraints.size(), info, debugDrawer, 0);
+		// Every body felt every impulse of this solve (D5: the next warm start gives it to both).
+		for (int i = 0; i < m_manifolds.size(); ++i)
+			for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
+			{
+				btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
+				btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
+			}
 		m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
 		return btScalar(0);
 	}
@@ -214,6 +224,10 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 							  getActiveConstraintRowSolverGeneric(),
 							  getActiveConstraintRowSolverLowerLimit()};
 	m_passes->build(m_layers, m_contactRowLayer, m_jointRowLayer, m_solverBodyOfNode, pools);
+	// D5: the warm start is the state last step ended in: a lower body feels only the share of a
+	// contact's impulse it felt then.
+	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING)
+		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_warmStartCoupling);
 	m_stats.m_timeGraphMs += millisecondsSince(clock);
 
 	// Global pass: Bullet's own sweeps over every row, every body free; the app's residual
@@ -237,11 +251,6 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	params.m_jointDamping = info.m_damping;
 	params.m_inelasticFixation = m_settings.m_inelasticFixation;
 	const bool weightFeeling = m_settings.m_weightFeeling;
-	// f = 0 without weight feeling is Erleben's classic method: no body feels the layers above it,
-	// so Bullet's warm start moves only a row's free end (D5). With a global pass or weight
-	// feeling the warm start is last step's coupled solution, their head start.
-	if (globalSweeps == 0 && !weightFeeling && (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING))
-		m_passes->withholdWarmStartFromLowerEnds(pools);
 	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_passes->solveLayer(k, layerSweeps, params, weightFeeling, pools);
 	m_stats.m_timeLayersMs += millisecondsSince(clock);
 	if (weightFeeling)
@@ -255,8 +264,9 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	}
 
 	// Finish once: contact impulses (warm start and what apps read), joint feedback and
-	// breaking, velocities.
+	// breaking, velocities. Each point keeps the share its lower body felt, for the next warm start.
 	clock.reset();
+	m_passes->storeFeltShares(pools, weightFeeling);
 	solveGroupCacheFriendlyFinish(bodies, m_bodies.size(), stepInfo);
 	correctPositions(info, false, true);
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);

@@ -16,8 +16,10 @@ subject to the following restrictions:
 
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
-void btWithheldReactions::reset(int numNodes)
+void btWithheldReactions::reset(int numNodes, int numContactRows)
 {
+	m_heldBack.resize(numContactRows);
+	for (int i = 0; i < numContactRows; ++i) m_heldBack[i] = btScalar(0);
 	m_linear.resize(numNodes);
 	m_angular.resize(numNodes);
 	m_has.resize(numNodes);

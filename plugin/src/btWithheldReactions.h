@@ -15,6 +15,7 @@ subject to the following restrictions:
 #ifndef BT_SHOCK_PROPAGATION_WITHHELD_REACTIONS_H
 #define BT_SHOCK_PROPAGATION_WITHHELD_REACTIONS_H
 
+#include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletDynamics/ConstraintSolver/btSolverBody.h"
 #include "LinearMath/btAlignedObjectArray.h"
 
@@ -31,7 +32,7 @@ subject to the following restrictions:
 class btWithheldReactions
 {
 public:
-	void reset(int numNodes);
+	void reset(int numNodes, int numContactRows);
 	/// Withhold the impulse (linear, angular; world frame) from node.
 	void add(int node, const btVector3& linear, const btVector3& angular);
 	bool has(int node) const { return m_has[node] != 0; }
@@ -40,10 +41,22 @@ public:
 	/// Forget node's withheld impulse.
 	void discard(int node);
 
+	/// Per contact row: how much of its impulse its lower end did not feel this step.
+	void holdBack(int contactRow, btScalar impulse) { m_heldBack[contactRow] += impulse; }
+	btScalar heldBack(int contactRow) const { return m_heldBack[contactRow]; }
+
+	/// The felt share F of a contact point's step impulse T: what both of its bodies received (the
+	/// rest went to its upper body only). Kept between steps in btManifoldPoint::m_prevRHS, which
+	/// Bullet's rigid-body solvers never read (its multibody solver does; that world is not
+	/// supported). The warm start of the next step gives the lower body F, the upper body T.
+	static btScalar feltShare(const btManifoldPoint& cp) { return cp.m_prevRHS; }
+	static void setFeltShare(btManifoldPoint& cp, btScalar felt) { cp.m_prevRHS = felt; }
+
 private:
 	btAlignedObjectArray<btVector3> m_linear;
 	btAlignedObjectArray<btVector3> m_angular;
 	btAlignedObjectArray<char> m_has;
+	btAlignedObjectArray<btScalar> m_heldBack;  // per contact row
 };
 
 #endif  // BT_SHOCK_PROPAGATION_WITHHELD_REACTIONS_H
