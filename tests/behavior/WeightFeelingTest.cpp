@@ -159,7 +159,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, WeightFeeling,
 										   Mode{solverOnlyWeightFeeling(), "SolverOnly"}),
 						 modeName);
 
-// Without the mode the same statics fail: the tests above can fail (measured 0.10 of the weight).
+// Without the mode the same statics fail: the tests above can fail (measured 0.24 of the weight).
 TEST(WithoutWeightFeeling, GroundCarriesOnlyPartOfTheTower)
 {
 	SceneRun run("tower", spec::shock(10, 0.0), {{"n", 10}});
