@@ -155,7 +155,7 @@ struct btShockPropagationSettings
 	/// warm start, F = T: the unfelt parts pile up on the lower bodies step after step and large
 	/// stacks creep (pyramid of base 40: 0.89 cm in 10 s, base 140: 8 cm in 6 s). 0.25 tips the
 	/// seesaw and holds the pyramids of base 40 and 60 at 0.00 cm (docs/design.md).
-	btScalar m_warmStartCoupling = btScalar(0.25);
+	btScalar m_warmStartCoupling = btScalar(0.2);
 
 	/// Weight feeling (D13, in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
 	/// 2025): after the bottom-up layer pass, a top-down pass hands each layer's impulses, which
