@@ -118,10 +118,11 @@ TEST(FreeFall, BodyWithoutContactsIsUntouched)
 	EXPECT_NEAR(a->getLinearVelocity().y(), -9.81 * shock.sim->time(), 1e-3);
 }
 
-TEST(Impulses, AppliedImpulseIsTheTotalOfBothPasses)
+TEST(Impulses, AppliedImpulseIsTheStepsTotal)
 {
 	// Two boxes, f = 0.5: the top box rests, so the impulses on it over one step sum to m g dt.
-	// Had only one pass been written back, the sum would be about half of that.
+	// Each row holds one impulse for the whole step (global and layer passes), written back once;
+	// a pass's share alone would be about half of that.
 	SceneRun run("tower", spec::shock(10, 0.5), {{"n", 2}});
 	run.run(1.0);
 	const btRigidBody* top = run.named("top");
