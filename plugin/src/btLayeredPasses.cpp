@@ -15,6 +15,7 @@ subject to the following restrictions:
 #include "btLayeredPasses.h"
 
 #include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
+#include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "BulletShockPropagation/btStackLayers.h"
 
 namespace
@@ -296,7 +297,7 @@ bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
 	return any;
 }
 
-int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackSpeed,
+int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackPerGravity,
 									 int* rejected)
 {
 	int total = 0;
@@ -329,7 +330,8 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
 			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
 			const btScalar before = (base + m_before[i].m_deltaLinear).length();
-			carried = after <= before + slackSpeed;
+			const btScalar slack = b.m_originalBody ? slackPerGravity * b.m_originalBody->getGravity().length() : btScalar(0);
+			carried = after <= before + slack;
 		}
 		if (!carried)
 		{

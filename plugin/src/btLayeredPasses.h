@@ -75,9 +75,9 @@ public:
 	/// them, then the layer is re-solved with its own lower bodies fixated (withholding in turn).
 	/// Returns the number of sweeps run.
 	/// Guard: a layer whose re-solve leaves a free body faster than before its load arrived (by
-	/// more than slackSpeed, m/s) could not carry the load; it keeps its state from before and
-	/// hands nothing on (counted in *rejected).
-	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackSpeed, int* rejected);
+	/// more than slackPerGravity x |g| of that body, s x m/s^2) could not carry the load; it keeps
+	/// its state from before and hands nothing on (counted in *rejected).
+	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackPerGravity, int* rejected);
 
 	/// Sum over rows of |impulse change| in the layer passes (N s), for statistics.
 	btScalar getLayerImpulse() const { return m_layerImpulse; }

@@ -77,6 +77,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	if (!isFiniteScalar(settings.m_supportAngle)) m_settings.m_supportAngle = defaults.m_supportAngle;
 	if (!(settings.m_warmStartCoupling >= 0 && settings.m_warmStartCoupling <= 1)) m_settings.m_warmStartCoupling = defaults.m_warmStartCoupling;
 	if (!(settings.m_warmStartWeights >= 0)) m_settings.m_warmStartWeights = defaults.m_warmStartWeights;
+	if (!(settings.m_weightGuardSlack >= 0) || !isFiniteScalar(settings.m_weightGuardSlack)) m_settings.m_weightGuardSlack = defaults.m_weightGuardSlack;
 }
 
 int btShockPropagationConstraintSolver::sweepCount(int setting, int worldIterations) const
@@ -256,10 +257,10 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	if (weightFeeling)
 	{
 		clock.reset();
-		// The guard's slack: a share of the speed gravity gives in one step.
-		const btScalar g = m_bodies.size() ? btRigidBody::upcast(m_bodies[0])->getGravity().length() : btScalar(0);
-		const btScalar slack = m_settings.m_weightGuardSlack * g * info.m_timeStep;
-		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(m_settings.m_weightIterations, params, pools, slack, &m_stats.m_numWeightRejections);
+		// The guard's slack, per body: a share of the speed its gravity gives it in one step.
+		const btScalar slackPerGravity = m_settings.m_weightGuardSlack * info.m_timeStep;
+		m_stats.m_numWeightSweeps +=
+			m_passes->solveWeightPass(m_settings.m_weightIterations, params, pools, slackPerGravity, &m_stats.m_numWeightRejections);
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 
