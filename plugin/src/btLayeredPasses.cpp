@@ -97,7 +97,7 @@ void btLayeredPasses::bucketFollowers(const btConstraintArray& rows, const btAli
 template <class Visit>
 void btLayeredPasses::visitLayerRows(int layer, const btSolverPools& pools, Visit visit)
 {
-	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1]; ++i) visit(pools.m_joints[m_jointRows[i]], BT_ROW_JOINT);
+	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1] && m_withJoints; ++i) visit(pools.m_joints[m_jointRows[i]], BT_ROW_JOINT);
 	for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i) visit(pools.m_contacts[m_contactRows[i]], BT_ROW_CONTACT);
 	for (int i = m_frictionStart[layer]; i < m_frictionStart[layer + 1]; ++i) visit(pools.m_frictions[m_frictionRows[i]], BT_ROW_FRICTION);
 	for (int i = m_rollingStart[layer]; i < m_rollingStart[layer + 1]; ++i)
@@ -173,17 +173,18 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 	}
 }
 
-void btLayeredPasses::sweep(int layer, int iteration, const btSolverPools& pools)
+void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolverPools& pools)
 {
 	// The order of a stock sweep (btSequentialImpulseConstraintSolver::solveSingleIteration,
 	// contacts and friction not interleaved): joints, contact normals, friction bounded by the
 	// normal impulse, rolling friction bounded by the normal impulse and its own coefficient.
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
-	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1]; ++i)
+	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1] && m_withJoints; ++i)
 	{
 		btSolverConstraint& c = pools.m_joints[m_jointRows[i]];
 		if (iteration < c.m_overrideNumSolverIterations) pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
 	}
+	if (iteration >= sweeps) return;  // extra sweeps for joints that ask for more only
 	for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i)
 	{
 		btSolverConstraint& c = pools.m_contacts[m_contactRows[i]];
@@ -218,7 +219,9 @@ void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationPar
 {
 	if (layer < 0 || layer >= m_numLayers) return;
 	fixate(layer, params, pools);
-	for (int iteration = 0; iteration < sweeps; ++iteration) sweep(layer, iteration, pools);
+	const bool joints = m_withJoints && m_jointStart[layer + 1] > m_jointStart[layer];
+	const int total = joints ? btMax(sweeps, m_jointSweeps) : sweeps;
+	for (int iteration = 0; iteration < total; ++iteration) sweep(layer, iteration, sweeps, pools);
 	release(layer, withhold, pools);
 }
 
@@ -300,6 +303,9 @@ bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
 int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackPerGravity,
 									 int* rejected)
 {
+	// Joint rows (all in layer 0, D8) are not re-solved here: they are no part of the load handed
+	// down, and their bodies may sit in layers already final (a rejection could not undo them).
+	m_withJoints = false;
 	int total = 0;
 	for (int k = m_numLayers - 1; k >= 0; --k)
 	{
@@ -316,7 +322,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		}
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
 		fixate(k, params, pools);
-		for (int iteration = 0; iteration < sweeps; ++iteration) sweep(k, iteration, pools);
+		for (int iteration = 0; iteration < sweeps; ++iteration) sweep(k, iteration, sweeps, pools);
 		total += sweeps;
 		// A load from above is carried by the layer's supports: it cannot leave a body moving
 		// faster than before it arrived. If it does, the layer could not carry it within its
@@ -348,5 +354,6 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		}
 		release(k, true, pools);  // a rejected layer's rows changed nothing: nothing is withheld
 	}
+	m_withJoints = true;
 	return total;
 }

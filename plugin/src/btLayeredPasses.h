@@ -56,6 +56,8 @@ public:
 			   const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools);
 
 	int getNumLayers() const { return m_numLayers; }
+	/// Sweeps of the joint rows in their layer (at least the layer's own count).
+	void setJointSweeps(int sweeps) { m_jointSweeps = sweeps; }
 
 	/// Sweeps of layer k with its lower bodies fixated. withhold: record the reactions fixation
 	/// keeps from the lower bodies, for solveWeightPass.
@@ -85,7 +87,7 @@ public:
 private:
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);
-	void sweep(int layer, int iteration, const btSolverPools& pools);
+	void sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
 	/// Friction or rolling-friction rows into the layers of their contact rows.
 	void bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
 						 btAlignedObjectArray<int>& sorted);
@@ -95,6 +97,8 @@ private:
 	void visitLayerRows(int layer, const btSolverPools& pools, Visit visit);
 
 	int m_numLayers = 0;
+	int m_jointSweeps = 0;
+	bool m_withJoints = true;  // the weight pass leaves joint rows alone
 	const btStackLayers* m_layers = 0;
 	// Rows per layer (CSR: start offsets of size K + 1, then row indices), per pool.
 	btAlignedObjectArray<int> m_contactStart, m_contactRows;

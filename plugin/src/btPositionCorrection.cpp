@@ -153,7 +153,7 @@ void btPositionCorrection::apply()
 		if (!b.m_body || (b.m_shift.isZero() && b.m_turn.isZero())) continue;
 		btTransform corrected;
 		btTransformUtil::integrateTransform(b.m_body->getWorldTransform(), b.m_shift, b.m_turn, btScalar(1), corrected);
-		b.m_body->setWorldTransform(corrected);
-		b.m_body->setInterpolationWorldTransform(corrected);
+		// As Bullet's own integration does: the world inertia follows the new orientation.
+		b.m_body->setCenterOfMassTransform(corrected);
 	}
 }

@@ -128,7 +128,7 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 	m_stats.m_largestLayer = btMax(m_stats.m_largestLayer, m_layers.getLargestLayer());
 	m_stats.m_timeGraphMs += millisecondsSince(clock);
 
-	if (numLayers <= 1 && !m_settings.m_layerFlatGroups)
+	if ((numLayers <= 1 && !m_settings.m_layerFlatGroups) || m_bodies.size() == 0)
 	{
 		// No stacks: Bullet's own solve of the group, with the app's settings (D9). The warm start
 		// limit (D5) holds here too: a group that was layered last step may have left impulses
@@ -163,6 +163,7 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 	int row = 0;
 	for (int i = 0; i < m_manifolds.size() && row < numRows; ++i)
 	{
+		if (m_manifolds[i]->getNumContacts() == 0) continue;  // no rows (and no point 0 to address)
 		const btManifoldPoint* first = &m_manifolds[i]->getContactPoint(0);
 		const btManifoldPoint* last = first + MANIFOLD_CACHE_SIZE;
 		const int edge = m_edgeOfManifold[i];
@@ -252,6 +253,9 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	params.m_jointDamping = info.m_damping;
 	params.m_inelasticFixation = m_settings.m_inelasticFixation;
 	const bool weightFeeling = m_settings.m_weightFeeling;
+	// Joints with more iterations than the app's (btTypedConstraint::setOverrideNumSolverIterations)
+	// get them, as in a stock solve: their rows are in layer 0.
+	m_passes->setJointSweeps(btMax(layerSweeps, m_maxOverrideNumSolverIterations));
 	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_passes->solveLayer(k, layerSweeps, params, weightFeeling, pools);
 	m_stats.m_timeLayersMs += millisecondsSince(clock);
 	if (weightFeeling)
@@ -291,10 +295,13 @@ void btShockPropagationConstraintSolver::limitWarmStart(const btContactSolverInf
 		for (const btCollisionObject* end : ends)
 		{
 			const btRigidBody* rb = btRigidBody::upcast(end);
-			if (rb && rb->getInvMass() > btScalar(0)) lighter = btMin(lighter, rb->getGravity().length() / rb->getInvMass());
+			// Weight impulse of each dynamic end; a body without gravity has no weight to scale by.
+			const btScalar g = rb ? rb->getGravity().length() : btScalar(0);
+			if (rb && rb->getInvMass() > btScalar(0) && g > btScalar(0)) lighter = btMin(lighter, g / rb->getInvMass());
 		}
 		if (!(lighter < SIMD_INFINITY)) continue;
 		const btScalar cap = m_settings.m_warmStartWeights * lighter * dt;
+		if (!(cap > btScalar(0))) continue;
 		for (int j = 0; j < m->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m->getContactPoint(j);

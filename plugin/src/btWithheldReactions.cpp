@@ -43,9 +43,12 @@ void btWithheldReactions::deliver(int node, btSolverBody& body)
 	const btRigidBody* rb = body.m_originalBody;
 	if (rb)
 	{
-		// The velocity change Bullet's kernels would have made: W J^T lambda, with the body's factors.
-		body.internalGetDeltaLinearVelocity() += m_linear[node] * rb->getInvMass() * rb->getLinearFactor();
-		body.internalGetDeltaAngularVelocity() += (rb->getInvInertiaTensorWorld() * m_angular[node]) * rb->getAngularFactor();
+		// The velocity change Bullet's kernels would have made (btSolverBody::internalApplyImpulse
+		// with a row's W J^T): the factors enter twice, once in the row and once in the body.
+		const btVector3& lf = rb->getLinearFactor();
+		const btVector3& af = rb->getAngularFactor();
+		body.internalGetDeltaLinearVelocity() += m_linear[node] * rb->getInvMass() * lf * lf;
+		body.internalGetDeltaAngularVelocity() += (rb->getInvInertiaTensorWorld() * m_angular[node]) * af * af;
 	}
 	discard(node);
 }
