@@ -206,7 +206,7 @@ TEST(HostileWorld, WithoutPoisonThePluginExceedsTheBoundsNoMoreOftenThanStock)
 {
 	// Stock Bullet spreads NaN from poisoned bodies (it fails the finiteness check in most seeds),
 	// so the comparison runs the same worlds without poison. Stock exceeds the same bounds too
-	// (1,000 seeds: 9 stock, 7 plugin); the plugin may not do so much more often.
+	// (1,000 seeds: 9 stock, 8 plugin); the plugin may not do so much more often.
 	scenes::HostileParams clean;
 	clean.poisonFraction = 0;
 	const int stockOver = runSeeds(spec::stock(), clean, -1);
