@@ -41,8 +41,7 @@ int clampLayer(int layer, int numLayers)
 }  // namespace
 
 void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectArray<int>& contactRowLayer,
-							const btAlignedObjectArray<int>& jointRowLayer, const btAlignedObjectArray<int>& solverBodyOfNode,
-							const btSolverPools& pools)
+							const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools)
 {
 	m_layers = &layers;
 	m_numLayers = btMax(1, layers.getNumLayers());
@@ -56,11 +55,6 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	bucketFollowers(pools.m_frictions, layerOf, m_frictionStart, m_frictionRows);
 	bucketFollowers(pools.m_rollingFrictions, layerOf, m_rollingStart, m_rollingRows);
 
-	btAlignedObjectArray<int>& followLayer = m_scratchFollow;
-	const int numJoints = pools.m_joints.size();
-	followLayer.resize(numJoints);
-	for (int i = 0; i < numJoints; ++i) followLayer[i] = clampLayer(jointRowLayer[i], m_numLayers);
-	bucket(m_numLayers, numJoints, numJoints ? &followLayer[0] : 0, m_jointStart, m_jointRows, m_scratchCursor);
 
 	m_solverBodyOfNode = solverBodyOfNode;
 	const int numSolverBodies = pools.m_bodies.size();
@@ -77,7 +71,6 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		if (id >= 0 && id < numSolverBodies) m_nodeOfSolverBody[id] = node;
 	}
 	m_withheld.reset(solverBodyOfNode.size(), pools.m_contacts.size());
-	m_layerImpulse = 0;
 }
 
 void btLayeredPasses::bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
@@ -94,10 +87,29 @@ void btLayeredPasses::bucketFollowers(const btConstraintArray& rows, const btAli
 	bucket(m_numLayers, numRows, numRows ? &followLayer[0] : 0, start, sorted, m_scratchCursor);
 }
 
+void btLayeredPasses::markFixated(int layer, char value)
+{
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id >= 0) m_fixated[id] = value;
+	}
+}
+
+void btLayeredPasses::withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse)
+{
+	// J_F^T impulse on the fixated end F, kept for it instead of applied.
+	const int node = m_nodeOfSolverBody[sideA ? row.m_solverBodyIdA : row.m_solverBodyIdB];
+	if (node < 0) return;
+	m_withheld.add(node, (sideA ? row.m_contactNormal1 : row.m_contactNormal2) * impulse,
+				   (sideA ? row.m_relpos1CrossNormal : row.m_relpos2CrossNormal) * impulse);
+}
+
 template <class Visit>
 void btLayeredPasses::visitLayerRows(int layer, const btSolverPools& pools, Visit visit)
 {
-	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1] && m_withJoints; ++i) visit(pools.m_joints[m_jointRows[i]], BT_ROW_JOINT);
+	if (hasJoints(layer, pools))
+		for (int i = 0; i < pools.m_joints.size(); ++i) visit(pools.m_joints[i], BT_ROW_JOINT);
 	for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i) visit(pools.m_contacts[m_contactRows[i]], BT_ROW_CONTACT);
 	for (int i = m_frictionStart[layer]; i < m_frictionStart[layer + 1]; ++i) visit(pools.m_frictions[m_frictionRows[i]], BT_ROW_FRICTION);
 	for (int i = m_rollingStart[layer]; i < m_rollingStart[layer + 1]; ++i)
@@ -107,11 +119,7 @@ void btLayeredPasses::visitLayerRows(int layer, const btSolverPools& pools, Visi
 void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools)
 {
 	// Lower bodies of the layer (height <= layer): infinite mass while the layer is swept.
-	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
-	{
-		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
-		if (id >= 0) m_fixated[id] = 1;
-	}
+	markFixated(layer, 1);
 	m_backups.resize(0);
 	m_impulseBefore.resize(0);
 	visitLayerRows(layer, pools, [&](btSolverConstraint& row, btSolverRowKind kind) {
@@ -153,7 +161,6 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 	int row = 0, backup = 0;
 	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind kind) {
 		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
-		m_layerImpulse += btFabs(change);
 		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
 		if (!fixA && !fixB) return;
@@ -161,16 +168,9 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
 		if (!withhold || change == btScalar(0)) return;
 		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
-		const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
-		if (node < 0) return;
-		m_withheld.add(node, (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * change,
-					   (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * change);
+		withholdFromFixated(c, fixA, change);
 	});
-	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
-	{
-		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
-		if (id >= 0) m_fixated[id] = 0;
-	}
+	markFixated(layer, 0);
 }
 
 void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolverPools& pools)
@@ -179,9 +179,9 @@ void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolver
 	// contacts and friction not interleaved): joints, contact normals, friction bounded by the
 	// normal impulse, rolling friction bounded by the normal impulse and its own coefficient.
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
-	for (int i = m_jointStart[layer]; i < m_jointStart[layer + 1] && m_withJoints; ++i)
+	for (int i = 0; i < pools.m_joints.size() && hasJoints(layer, pools); ++i)
 	{
-		btSolverConstraint& c = pools.m_joints[m_jointRows[i]];
+		btSolverConstraint& c = pools.m_joints[i];
 		if (iteration < c.m_overrideNumSolverIterations) pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
 	}
 	if (iteration >= sweeps) return;  // extra sweeps for joints that ask for more only
@@ -219,8 +219,7 @@ void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationPar
 {
 	if (layer < 0 || layer >= m_numLayers) return;
 	fixate(layer, params, pools);
-	const bool joints = m_withJoints && m_jointStart[layer + 1] > m_jointStart[layer];
-	const int total = joints ? btMax(sweeps, m_jointSweeps) : sweeps;
+	const int total = hasJoints(layer, pools) ? btMax(sweeps, m_jointSweeps) : sweeps;
 	for (int iteration = 0; iteration < total; ++iteration) sweep(layer, iteration, sweeps, pools);
 	release(layer, withhold, pools);
 }
@@ -232,11 +231,7 @@ void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScal
 	// (1 - coupling) of the rest back from it and hold it back again, as the layer passes would.
 	for (int layer = 0; layer < m_numLayers && layer < m_layers->getNumLayers(); ++layer)
 	{
-		for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
-		{
-			const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
-			if (id >= 0) m_fixated[id] = 1;
-		}
+		markFixated(layer, 1);
 		for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i)
 		{
 			const int rowIndex = m_contactRows[i];
@@ -254,17 +249,10 @@ void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScal
 			btSolverBody& body = pools.m_bodies[id];
 			if (fixA) body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, -unfelt);
 			else body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, -unfelt);
-			const int node = m_nodeOfSolverBody[id];
-			if (node >= 0)
-				m_withheld.add(node, (fixA ? c.m_contactNormal1 : c.m_contactNormal2) * unfelt,
-							   (fixA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) * unfelt);
+			withholdFromFixated(c, fixA, unfelt);
 			m_withheld.holdBack(rowIndex, unfelt);
 		}
-		for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
-		{
-			const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
-			if (id >= 0) m_fixated[id] = 0;
-		}
+		markFixated(layer, 0);
 	}
 }
 

@@ -50,10 +50,11 @@ struct btSolverPools
 class btLayeredPasses
 {
 public:
-	/// rowLayer: per contact row and per joint row, its layer (-1: none, solved in layer 0).
-	/// nodeOfSolverBody: per solver body, its graph node or -1 (static, kinematic, Bullet's fixed body).
-	void build(const btStackLayers& layers, const btAlignedObjectArray<int>& contactRowLayer, const btAlignedObjectArray<int>& jointRowLayer,
-			   const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools);
+	/// contactRowLayer: per contact row, its layer (-1: none, solved in layer 0). Joint rows are
+	/// no graph edges (D8): all of them are swept in layer 0. solverBodyOfNode: per graph node, its
+	/// solver body.
+	void build(const btStackLayers& layers, const btAlignedObjectArray<int>& contactRowLayer, const btAlignedObjectArray<int>& solverBodyOfNode,
+			   const btSolverPools& pools);
 
 	int getNumLayers() const { return m_numLayers; }
 	/// Sweeps of the joint rows in their layer (at least the layer's own count).
@@ -81,13 +82,16 @@ public:
 	/// its state from before and hands nothing on (counted in *rejected).
 	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackPerGravity, int* rejected);
 
-	/// Sum over rows of |impulse change| in the layer passes (N s), for statistics.
-	btScalar getLayerImpulse() const { return m_layerImpulse; }
 
 private:
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);
 	void sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
+	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
+	void markFixated(int layer, char value);
+	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
+	void withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse);
+	bool hasJoints(int layer, const btSolverPools& pools) const { return layer == 0 && m_withJoints && pools.m_joints.size() > 0; }
 	/// Friction or rolling-friction rows into the layers of their contact rows.
 	void bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
 						 btAlignedObjectArray<int>& sorted);
@@ -104,7 +108,6 @@ private:
 	btAlignedObjectArray<int> m_contactStart, m_contactRows;
 	btAlignedObjectArray<int> m_frictionStart, m_frictionRows;
 	btAlignedObjectArray<int> m_rollingStart, m_rollingRows;
-	btAlignedObjectArray<int> m_jointStart, m_jointRows;
 	btAlignedObjectArray<int> m_solverBodyOfNode;
 	btAlignedObjectArray<int> m_nodeOfSolverBody;
 
@@ -121,7 +124,6 @@ private:
 	btAlignedObjectArray<btBodyDelta> m_before;           // weight pass: free bodies before their load
 
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
-	btScalar m_layerImpulse = 0;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 };
 

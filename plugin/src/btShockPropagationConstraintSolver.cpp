@@ -177,18 +177,6 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 	}
 	for (; row < numRows; ++row) m_contactRowLayer[row] = -1;
 
-	// Joint rows: m_tmpConstraintSizesPool holds each constraint's row count, in order.
-	m_jointRowLayer.resize(m_tmpSolverNonContactConstraintPool.size());
-	int jointRow = 0;
-	for (int i = 0; i < m_constraints.size() && i < m_tmpConstraintSizesPool.size(); ++i)
-	{
-		const int edge = m_edgeOfConstraint[i];
-		const int layer = edge >= 0 ? m_layers.getEdgeLayer(edge) : -1;
-		for (int j = 0; j < m_tmpConstraintSizesPool[i].m_numConstraintRows && jointRow < m_jointRowLayer.size(); ++j)
-			m_jointRowLayer[jointRow++] = layer;
-	}
-	for (; jointRow < m_jointRowLayer.size(); ++jointRow) m_jointRowLayer[jointRow] = -1;
-
 	m_solverBodyOfNode.resize(m_bodies.size());
 	for (int i = 0; i < m_bodies.size(); ++i) m_solverBodyOfNode[i] = m_bodies[i]->getCompanionId();
 }
@@ -225,7 +213,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 							  m_tmpSolverNonContactConstraintPool,
 							  getActiveConstraintRowSolverGeneric(),
 							  getActiveConstraintRowSolverLowerLimit()};
-	m_passes->build(m_layers, m_contactRowLayer, m_jointRowLayer, m_solverBodyOfNode, pools);
+	m_passes->build(m_layers, m_contactRowLayer, m_solverBodyOfNode, pools);
 	// D5: the warm start is the state last step ended in: a lower body feels only the share of a
 	// contact's impulse it felt then.
 	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING)

@@ -80,8 +80,6 @@ void btShockPropagationConstraintSolver::buildGraph()
 	// a closed chain (a bridge anchored at both ends) between two fixated neighbours, which fight
 	// (measured: the hinge bridge never settles, 1.2 m/s after 10 s). Joint rows are swept in the
 	// global pass and in layer 0, where nothing is fixated; mechanisms without stacks are Bullet's.
-	m_edgeOfConstraint.resize(m_constraints.size());
-	for (int i = 0; i < m_constraints.size(); ++i) m_edgeOfConstraint[i] = -1;
 	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(-1);
 	m_graph.buildAdjacency();
 	m_layers.build(m_graph);

@@ -129,9 +129,7 @@ private:
 	btAlignedObjectArray<btPersistentManifold*> m_manifolds;
 	btAlignedObjectArray<btTypedConstraint*> m_constraints;
 	btAlignedObjectArray<int> m_edgeOfManifold;    // graph edge of each manifold, -1 if none
-	btAlignedObjectArray<int> m_edgeOfConstraint;  // graph edge of each constraint, -1 if none
 	btAlignedObjectArray<int> m_contactRowLayer;
-	btAlignedObjectArray<int> m_jointRowLayer;
 	btAlignedObjectArray<int> m_solverBodyOfNode;
 	btAlignedObjectArray<int> m_tallestOfComponent;  // second correction: tallest height per component
 	btAlignedObjectArray<int> m_keptEdges;
