@@ -1,0 +1,41 @@
+// The truth suite: cases whose expected outcome comes from physics (statics, the lever rule,
+// Coulomb friction, g (sin a - mu cos a), a converged reference), never from the plugin's output.
+// One definition serves the ctest suite (tests/truth/, which asserts the plugin's default) and the
+// report program bsp_truth (every solver configuration, ms per step, the truth chart).
+// Not part of the shipped plugin.
+#pragma once
+
+#include <harness/Simulation.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace truth
+{
+/// What one case measured under one solver.
+struct Verdict
+{
+	bool pass = false;        ///< the physics statement held
+	double figure = 0;        ///< the headline measured value (in `unit`)
+	double expected = 0;      ///< what physics says it should be (in `unit`)
+	std::string unit;         ///< e.g. "m", "-", "s"
+	std::string detail;       ///< one line: what was measured against what
+	double msPerStep = 0;     ///< wall-clock ms per stepSimulation, for the report only (never asserted)
+};
+
+struct TruthCase
+{
+	std::string name;       ///< unique, gtest-safe: [A-Za-z0-9_]
+	std::string group;      ///< e.g. "topple", "statics", "friction", "lever", "dynamics"
+	std::string statement;  ///< the physics statement, one sentence, e.g. "stands iff every sub-stack's COM is over its support"
+	std::function<Verdict(const harness::SolverSpec&)> run;
+};
+
+/// Every case, in a fixed order.
+const std::vector<TruthCase>& truthCases();
+
+/// Cases defined in src/StaticsCases.cpp and src/DynamicsCases.cpp.
+void addStaticsCases(std::vector<TruthCase>& cases);
+void addDynamicsCases(std::vector<TruthCase>& cases);
+}  // namespace truth

@@ -1,0 +1,8 @@
+#include <truth/TruthCase.h>
+
+namespace truth
+{
+void addDynamicsCases(std::vector<TruthCase>& /*cases*/)
+{
+}
+}  // namespace truth
