@@ -39,6 +39,12 @@ const std::vector<SceneEntry>& registry()
 		{"hard", "domino_row", "Row of 15 dominoes; the first is tipped and the chain reaction topples them all.", createDominoRow, dominoRowParams()},
 		{"hard", "leaning_tower", "Cubes each shifted 0.3 of their edge past the one below: the centre of mass overhangs, so it topples.", createLeaningTower, leaningTowerParams()},
 		{"hard", "hinge_bridge", "Planks chained by hinges between two posts, loaded with cubes; sags to an equilibrium and the joints hold.", createHingeBridge, hingeBridgeParams()},
+
+		// truth: outcome predicted by statics or Coulomb friction in closed form (the truth suite, demos/truth)
+		{"truth", "harmonic_stack", "Cubes with the book-stacking overhang a / (2k) times scale: stands iff scale <= 1.", createHarmonicStack, harmonicStackParams()},
+		{"truth", "pushed_stack", "Five boxes stacked on the ground, box friction 1, ground friction 0.5: pushed at the bottom, slides iff F > mu W.", createPushedStack, pushedStackParams()},
+		{"truth", "ramp_stack", "Three boxes stacked on a 20 degree ramp: sticks iff mu >= tan(angle), else slides at g (sin a - mu cos a).", createRampStack, rampStackParams()},
+		{"truth", "loaded_lintel", "Lintel on two capped columns with a heavy box off centre: the caps share the load by the lever rule.", createLoadedLintel, loadedLintelParams()},
 	};
 	return table;
 }

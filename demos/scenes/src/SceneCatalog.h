@@ -60,6 +60,16 @@ Params frictionRampParams();
 Params dominoRowParams();
 Params hingeBridgeParams();
 
+// TruthScenes.cpp
+std::unique_ptr<SceneContent> createHarmonicStack(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createPushedStack(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createRampStack(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createLoadedLintel(btDiscreteDynamicsWorld& world, const Params& params);
+Params harmonicStackParams();
+Params pushedStackParams();
+Params rampStackParams();
+Params loadedLintelParams();
+
 }  // namespace scenes
 
 #endif  // SCENES_SCENE_CATALOG_H
