@@ -1,0 +1,76 @@
+// The truth suite (demos/truth): every case of truth::truthCases() under the plugin's defaults, in
+// world mode and solver-only mode, 10 iterations, must hold its physics statement. Stock Bullet
+// (SI at 10 and 100 iterations, SI with 4 sub-steps, MLCP) runs too, for the report line only:
+//   TRUTH | <case> | <config>: <PASS/FAIL/SKIP> <figure> <unit> (expected <expected>) | ...
+// With BSP_TRUTH_DETAIL=1 in the environment each configuration's detail line is printed as well.
+#include <truth/TruthCase.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Config
+{
+	const char* label;
+	harness::SolverKind kind;
+	int iterations;
+	int substeps;
+	bool asserted;  ///< the plugin's default: must pass
+};
+
+const Config kConfigs[] = {
+	{"sp", harness::SolverKind::ShockWorld, 10, 1, true},
+	{"sp-solver", harness::SolverKind::ShockSolverOnly, 10, 1, true},
+	{"si-10", harness::SolverKind::StockSI, 10, 1, false},
+	{"si-100", harness::SolverKind::StockSI, 100, 1, false},
+	{"si-sub4", harness::SolverKind::StockSI, 10, 4, false},
+	{"mlcp", harness::SolverKind::MLCPDantzig, 10, 1, false},
+};
+
+bool skipped(const truth::Verdict& v) { return v.detail.rfind("skipped", 0) == 0; }
+
+std::string reportEntry(const Config& config, const truth::Verdict& v)
+{
+	char buffer[256];
+	if (skipped(v))
+		std::snprintf(buffer, sizeof buffer, "%s: SKIP (%s)", config.label, v.detail.c_str());
+	else
+		std::snprintf(buffer, sizeof buffer, "%s: %s %.4g %s (expected %.4g)", config.label, v.pass ? "PASS" : "FAIL", v.figure,
+					  v.unit.c_str(), v.expected);
+	return buffer;
+}
+}  // namespace
+
+class Truth : public ::testing::TestWithParam<size_t>
+{
+};
+
+TEST_P(Truth, HoldsUnderThePluginDefault)
+{
+	const truth::TruthCase& c = truth::truthCases().at(GetParam());
+	std::string line = "TRUTH | " + c.name;
+	for (const Config& config : kConfigs)
+	{
+		harness::SolverSpec spec;  // the plugin's defaults: no plugin-only field is touched
+		spec.kind = config.kind;
+		spec.iterations = config.iterations;
+		spec.substeps = config.substeps;
+		const truth::Verdict v = c.run(spec);
+		line += " | " + reportEntry(config, v);
+		if (std::getenv("BSP_TRUTH_DETAIL"))
+			std::printf("  %s / %s: %s (%.3f ms/step)\n", c.name.c_str(), config.label, v.detail.c_str(), v.msPerStep);
+		if (config.asserted)
+			EXPECT_TRUE(v.pass) << c.name << " under " << config.label << " (" << c.statement << "): " << v.detail;
+	}
+	std::printf("%s\n", line.c_str());
+	std::fflush(stdout);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Truth, ::testing::Range(size_t(0), truth::truthCases().size()),
+						 [](const ::testing::TestParamInfo<size_t>& info) { return truth::truthCases().at(info.param).name; });
