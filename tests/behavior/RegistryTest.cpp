@@ -24,6 +24,8 @@ Overrides smallInstance(const std::string& scene)
 	if (scene == "dense_random") return {{"count", 20}};
 	if (scene == "tower") return {{"n", 8}};
 	if (scene == "card_house") return {{"levels", 2}};
+	if (scene == "ragdoll_pile") return {{"columnsX", 1}, {"columnsZ", 1}, {"layers", 2}};
+	if (scene == "leaning_columns") return {{"columnsX", 1}, {"columnsZ", 1}, {"layers", 6}};
 	return {};
 }
 

@@ -39,6 +39,11 @@ const std::vector<SceneEntry>& registry()
 		{"hard", "domino_row", "Row of 15 dominoes; the first is tipped and the chain reaction topples them all.", createDominoRow, dominoRowParams()},
 		{"hard", "leaning_tower", "Cubes each shifted 0.3 of their edge past the one below: the centre of mass overhangs, so it topples.", createLeaningTower, leaningTowerParams()},
 		{"hard", "hinge_bridge", "Planks chained by hinges between two posts, loaded with cubes; sags to an equilibrium and the joints hold.", createHingeBridge, hingeBridgeParams()},
+
+		// benchmark: layouts after Bullet's BenchmarkDemo and PyBullet's tests, with the outcome physics predicts
+		{"benchmark", "leaning_columns", "BenchmarkDemo's \"3000 boxes\" staircases, 2 x 2 columns of 12: each layer 0.35 m further out, so every column topples.", createLeaningColumns, leaningColumnsParams()},
+		{"benchmark", "ragdoll_pile", "BenchmarkDemo's passive ragdolls (11 capsules, hinges and cone twists), 2 x 2 x 3 dropped onto each other: they fold and fall.", createRagdollPile, ragdollPileParams()},
+		{"benchmark", "heavy_top_column", "PyBullet's column of 10 unit cubes whose top cube is 1000 times heavier: it stands and gains no energy.", createHeavyTopColumn, heavyTopColumnParams()},
 	};
 	return table;
 }

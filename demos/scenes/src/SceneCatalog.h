@@ -60,6 +60,14 @@ Params frictionRampParams();
 Params dominoRowParams();
 Params hingeBridgeParams();
 
+// BenchmarkScenes.cpp
+std::unique_ptr<SceneContent> createLeaningColumns(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createRagdollPile(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createHeavyTopColumn(btDiscreteDynamicsWorld& world, const Params& params);
+Params leaningColumnsParams();
+Params ragdollPileParams();
+Params heavyTopColumnParams();
+
 }  // namespace scenes
 
 #endif  // SCENES_SCENE_CATALOG_H
