@@ -44,6 +44,7 @@ harness::SolverSpec stockReference(int substeps, int iterations)
 
 constexpr double kSeesawDrop = 0.10;      // m
 constexpr double kSeesawHorizon = 3.0;    // s, give up after this
+constexpr double kSeesawMinimum = 1.0;    // s, stepped in any case (for the ms-per-step figure)
 constexpr double kSeesawTolerance = 0.25; // relative
 
 struct SeesawRun
@@ -62,16 +63,17 @@ SeesawRun runSeesaw(const harness::SolverSpec& spec)
 	SeesawRun run;
 	double previousDrop = 0;
 	const int frames = int(kSeesawHorizon * kFrameRate + 0.5);
-	for (int k = 0; k < frames; ++k)
+	// At least kSeesawMinimum of frames even after the tip, so ms per step is not one warm-up frame's.
+	const int minimumFrames = int(kSeesawMinimum * kFrameRate + 0.5);
+	for (int k = 0; k < frames && (run.tipTime < 0 || k < minimumFrames); ++k)
 	{
 		trial.step();
 		const double drop = y0 - (plank->getWorldTransform() * leftEndLocal).y();
-		if (drop >= kSeesawDrop)
+		if (run.tipTime < 0 && drop >= kSeesawDrop)
 		{
 			// Between frame k (time k / 60, drop previousDrop) and frame k + 1.
 			const double fraction = (kSeesawDrop - previousDrop) / (drop - previousDrop);
 			run.tipTime = (k + fraction) / kFrameRate;
-			break;
 		}
 		previousDrop = drop;
 	}
