@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""Charts for README from bsp_sweep's raw results (demos/charts.sh runs it).
+"""Charts for README from bsp_sweep's and bsp_truth's raw results (demos/charts.sh runs it).
 
 usage: plot_charts.py RESULTS_DIR CHARTS_DIR
 
-Reads RESULTS_DIR/{pareto,towers,scaling}.csv (pareto also from RESULTS_DIR/pareto-*/), writes PNG and SVG charts to CHARTS_DIR and prints
+Reads RESULTS_DIR/{pareto,towers,scaling,truth}.csv (pareto also from RESULTS_DIR/pareto-*/), writes PNG and SVG charts to CHARTS_DIR and prints
 the headline figures (also written to RESULTS_DIR/headline.txt). Needs Debian's python3-matplotlib.
 """
 import csv
@@ -261,6 +261,57 @@ def plot_scaling(rows, out_dir):
     save(fig, out_dir, "scaling")
 
 
+# truth_vs_cost: one colour per solver family; stock families in cool colours, plugin modes in reds.
+TRUTH_STYLE = {
+    "si": ("#1f77b4", "o"),
+    "si2f": ("#17becf", "s"),
+    "si-sub2": ("#2ca02c", "^"),
+    "si-sub4": ("#006400", "v"),
+    "si-sub8": ("#00441b", "<"),
+    "nncg": ("#9467bd", "D"),
+    "mlcp": ("#7f7f7f", "P"),
+    "sp": ("#d73027", "*"),
+    "sp-solver": ("#f46d43", "X"),
+    "sp-wf": ("#000000", "p"),
+    "sp-solver-wf": ("#67001f", "h"),
+}
+
+
+def plot_truth(rows, out_dir):
+    """Truths passed against mean ms per step over the cases, one point per configuration."""
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    configs = list(dict.fromkeys((r["config"], int(r["iterations"])) for r in rows))
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    seen = set()
+    for config, iterations in configs:
+        mine = [r for r in rows if r["config"] == config and int(r["iterations"]) == iterations]
+        ran = [r for r in mine if r["pass"] != "skipped" and not math.isnan(num(r["msPerStep"]))]
+        if not ran:
+            continue
+        passed = sum(1 for r in ran if r["pass"] == "1")
+        ms = sum(num(r["msPerStep"]) for r in ran) / len(ran)
+        color, marker = TRUTH_STYLE.get(config, ("black", "o"))
+        skipped = len(mine) - len(ran)
+        ax.scatter([ms], [passed], color=color if not skipped else "white", edgecolors=color, marker=marker, s=70, zorder=3,
+                   label=config if config not in seen else None)
+        seen.add(config)
+        text = config if config == "mlcp" else f"{config} {iterations}"
+        if skipped:
+            text += f" ({skipped} skipped)"
+        ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(5, 4), fontsize=7, rotation=30, color=color)
+    ax.set_xscale("log")
+    log_ticks(ax.xaxis)
+    ax.set_ylim(-0.5, len(cases) + 0.8)
+    ax.set_yticks(range(len(cases) + 1))
+    ax.set_xlabel("mean ms per step over the cases (log)")
+    ax.set_ylabel(f"truths passed (of {len(cases)})")
+    ax.set_title("Truth suite: physics statements held against cost per step")
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=8, loc="lower right", title="hollow: some cases skipped (MLCP over its time limit)", title_fontsize=7)
+    fig.tight_layout()
+    save(fig, out_dir, "truth_vs_cost")
+
+
 def headline(pareto, scaling):
     lines = []
     for scene in ("wall", "round_tower", "pyramid_30"):
@@ -315,12 +366,18 @@ def main():
     towers_csv, scaling_csv = os.path.join(results, "towers.csv"), os.path.join(results, "scaling.csv")
     towers = read(towers_csv) if os.path.exists(towers_csv) else []
     scaling = read(scaling_csv) if os.path.exists(scaling_csv) else []
+    truth_csv = os.path.join(results, "truth.csv")
+    truth = read(truth_csv) if os.path.exists(truth_csv) else []
     if pareto:
         plot_pareto(pareto, charts)
     if towers:
         plot_towers(towers, charts)
     if scaling:
         plot_scaling(scaling, charts)
+    if truth:
+        plot_truth(truth, charts)
+    if not pareto and not scaling:
+        return  # only other results (e.g. truth.csv): no headline to state
     lines = headline(pareto, scaling)
     with open(os.path.join(results, "headline.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")

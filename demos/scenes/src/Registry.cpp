@@ -45,6 +45,11 @@ const std::vector<SceneEntry>& registry()
 		{"truth", "pushed_stack", "Five boxes stacked on the ground, box friction 1, ground friction 0.5: pushed at the bottom, slides iff F > mu W.", createPushedStack, pushedStackParams()},
 		{"truth", "ramp_stack", "Three boxes stacked on a 20 degree ramp: sticks iff mu >= tan(angle), else slides at g (sin a - mu cos a).", createRampStack, rampStackParams()},
 		{"truth", "loaded_lintel", "Lintel on two capped columns with a heavy box off centre: the caps share the load by the lever rule.", createLoadedLintel, loadedLintelParams()},
+
+		// benchmark: layouts after Bullet's BenchmarkDemo and PyBullet's tests, with the outcome physics predicts
+		{"benchmark", "leaning_columns", "BenchmarkDemo's \"3000 boxes\" staircases, 2 x 2 columns of 12: each layer 0.35 m further out, so every column topples.", createLeaningColumns, leaningColumnsParams()},
+		{"benchmark", "ragdoll_pile", "BenchmarkDemo's passive ragdolls (11 capsules, hinges and cone twists), 2 x 2 x 3 dropped onto each other: they fold and fall.", createRagdollPile, ragdollPileParams()},
+		{"benchmark", "heavy_top_column", "PyBullet's column of 10 unit cubes whose top cube is 1000 times heavier: it stands and gains no energy.", createHeavyTopColumn, heavyTopColumnParams()},
 	};
 	return table;
 }

@@ -70,6 +70,14 @@ Params pushedStackParams();
 Params rampStackParams();
 Params loadedLintelParams();
 
+// BenchmarkScenes.cpp
+std::unique_ptr<SceneContent> createLeaningColumns(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createRagdollPile(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createHeavyTopColumn(btDiscreteDynamicsWorld& world, const Params& params);
+Params leaningColumnsParams();
+Params ragdollPileParams();
+Params heavyTopColumnParams();
+
 }  // namespace scenes
 
 #endif  // SCENES_SCENE_CATALOG_H

@@ -1,8 +1,302 @@
+// The dynamics half of the truth suite: motion whose outcome physics fixes (a seesaw tips, passive
+// ragdolls and leaning staircases collapse, a heavy-topped column stands still). Where physics gives
+// a number only through the motion itself (a tip time, how low a pile ends), the expected value is a
+// converged stock reference computed here, in the same process, never the plugin's output.
 #include <truth/TruthCase.h>
+
+#include <harness/Trial.h>
+
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
 
 namespace truth
 {
-void addDynamicsCases(std::vector<TruthCase>& /*cases*/)
+namespace
 {
+constexpr double kFrameRate = 60;  // Hz: every run steps 1/60 s frames (sub-steps inside a frame)
+
+std::string format(const char* fmt, double a = 0, double b = 0, double c = 0, double d = 0, double e = 0)
+{
+	char buffer[512];
+	std::snprintf(buffer, sizeof buffer, fmt, a, b, c, d, e);
+	return buffer;
+}
+
+harness::SolverSpec stockReference(int substeps, int iterations)
+{
+	harness::SolverSpec spec;
+	spec.kind = harness::SolverKind::StockSI;
+	spec.iterations = iterations;
+	spec.substeps = substeps;
+	return spec;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// 1. Seesaw tip time. hard/seesaw: a 6 m plank balanced on a static ridge, 5 cubes of 1 kg stacked on
+// its left end and 1 cube on its right end. The net torque turns it left; how fast is fixed by the
+// inertia of plank and load, which a converged solver reproduces. Tip time: the first time the plank's
+// left end has dropped kSeesawDrop (linear interpolation between frames).
+
+constexpr double kSeesawDrop = 0.10;      // m
+constexpr double kSeesawHorizon = 3.0;    // s, give up after this
+constexpr double kSeesawMinimum = 1.0;    // s, stepped in any case (for the ms-per-step figure)
+constexpr double kSeesawTolerance = 0.25; // relative
+
+struct SeesawRun
+{
+	double tipTime = -1;  // s, -1: never within kSeesawHorizon
+	double msPerStep = 0;
+};
+
+SeesawRun runSeesaw(const harness::SolverSpec& spec)
+{
+	harness::Trial trial(spec, "seesaw");
+	btRigidBody* plank = trial.scene().named("plank");
+	const btScalar halfLength = static_cast<btBoxShape*>(plank->getCollisionShape())->getHalfExtentsWithMargin().x();
+	const btVector3 leftEndLocal(-halfLength, 0, 0);
+	const double y0 = (plank->getWorldTransform() * leftEndLocal).y();
+	SeesawRun run;
+	double previousDrop = 0;
+	const int frames = int(kSeesawHorizon * kFrameRate + 0.5);
+	// At least kSeesawMinimum of frames even after the tip, so ms per step is not one warm-up frame's.
+	const int minimumFrames = int(kSeesawMinimum * kFrameRate + 0.5);
+	for (int k = 0; k < frames && (run.tipTime < 0 || k < minimumFrames); ++k)
+	{
+		trial.step();
+		const double drop = y0 - (plank->getWorldTransform() * leftEndLocal).y();
+		if (run.tipTime < 0 && drop >= kSeesawDrop)
+		{
+			// Between frame k (time k / 60, drop previousDrop) and frame k + 1.
+			const double fraction = (kSeesawDrop - previousDrop) / (drop - previousDrop);
+			run.tipTime = (k + fraction) / kFrameRate;
+		}
+		previousDrop = drop;
+	}
+	run.msPerStep = trial.summary().msPerStep;
+	return run;
+}
+
+const SeesawRun& seesawReference()
+{
+	static const SeesawRun reference = runSeesaw(stockReference(8, 50));
+	return reference;
+}
+
+Verdict seesawCase(const harness::SolverSpec& spec)
+{
+	const SeesawRun& ref = seesawReference();
+	const SeesawRun run = runSeesaw(spec);
+	Verdict v;
+	v.unit = "s";
+	v.figure = run.tipTime;
+	v.expected = ref.tipTime;
+	v.msPerStep = run.msPerStep;
+	v.pass = ref.tipTime > 0 && run.tipTime > 0 && std::fabs(run.tipTime - ref.tipTime) <= kSeesawTolerance * ref.tipTime;
+	if (run.tipTime < 0)
+		v.detail = format("left end never dropped %.2f m within %.0f s (reference, SI 8 sub-steps x 50 iterations: %.3f s)", kSeesawDrop, kSeesawHorizon, ref.tipTime);
+	else
+		v.detail = format("left end dropped %.2f m at %.3f s; reference (SI 8 sub-steps x 50 iterations) %.3f s, allowed +-%.0f%%", kSeesawDrop,
+						  run.tipTime, ref.tipTime, 100 * kSeesawTolerance);
+	return v;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// 2. Passive ragdoll pile. benchmark/ragdoll_pile: 12 of BenchmarkDemo's ragdolls (2 x 2 columns, 3
+// high), each tilted 5 degrees, dropped onto each other. No muscles: they fold and fall. Figure: the
+// mean head height after kRagdollSeconds; reference: stock SI with 4 sub-steps (10 iterations).
+
+constexpr double kRagdollSeconds = 5.0;
+constexpr double kRagdollRelative = 0.25;  // band: within 25% of the reference ...
+constexpr double kRagdollAbsolute = 0.10;  // ... or 0.1 m, whichever is wider
+constexpr double kRagdollStandingShare = 0.5;  // and below half a standing ragdoll's head height
+constexpr double kUprightHeadOverPelvis = 0.45;  // m: head this far above its pelvis = upright (standing: 0.6)
+
+struct RagdollRun
+{
+	double meanHeadHeight = 0;  // m
+	double standingHeadHeight = 0;  // m
+	int upright = 0;
+	int ragdolls = 0;
+	double msPerStep = 0;
+	bool nonFinite = false;
+};
+
+RagdollRun runRagdolls(const harness::SolverSpec& spec)
+{
+	harness::Trial trial(spec, "ragdoll_pile");
+	RagdollRun run;
+	run.ragdolls = int(trial.scene().facts.at("ragdolls"));
+	run.standingHeadHeight = trial.scene().facts.at("standingHeadHeight");
+	const int frames = int(kRagdollSeconds * kFrameRate + 0.5);
+	for (int k = 0; k < frames; ++k)
+		trial.step();
+	for (int i = 0; i < run.ragdolls; ++i)
+	{
+		const double head = trial.scene().named("head" + std::to_string(i))->getCenterOfMassPosition().y();
+		const double pelvis = trial.scene().named("pelvis" + std::to_string(i))->getCenterOfMassPosition().y();
+		run.meanHeadHeight += head / run.ragdolls;
+		if (head - pelvis > kUprightHeadOverPelvis)
+			++run.upright;
+	}
+	const harness::TrialSummary summary = trial.summary();
+	run.msPerStep = summary.msPerStep;
+	run.nonFinite = summary.nonFinite;
+	return run;
+}
+
+const RagdollRun& ragdollReference()
+{
+	static const RagdollRun reference = runRagdolls(stockReference(4, 10));
+	return reference;
+}
+
+Verdict ragdollCase(const harness::SolverSpec& spec)
+{
+	const RagdollRun& ref = ragdollReference();
+	const RagdollRun run = runRagdolls(spec);
+	Verdict v;
+	v.unit = "m";
+	v.figure = run.meanHeadHeight;
+	v.expected = ref.meanHeadHeight;
+	v.msPerStep = run.msPerStep;
+	const double band = std::max(kRagdollRelative * ref.meanHeadHeight, kRagdollAbsolute);
+	const double ceiling = kRagdollStandingShare * run.standingHeadHeight;
+	v.pass = !run.nonFinite && std::isfinite(run.meanHeadHeight) && std::fabs(run.meanHeadHeight - ref.meanHeadHeight) <= band &&
+			 run.meanHeadHeight < ceiling;
+	v.detail = format("mean head height after %.0f s %.3f m, reference (SI 4 sub-steps) %.3f m +- %.3f m, must be < %.2f m (half standing); ",
+					  kRagdollSeconds, run.meanHeadHeight, ref.meanHeadHeight, band, ceiling) +
+			   std::to_string(run.upright) + " of " + std::to_string(run.ragdolls) + " upright (reference " + std::to_string(ref.upright) + ")";
+	return v;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// 3. Leaning staircase columns. benchmark/leaning_columns: BenchmarkDemo's "3000 boxes" layout, 2 x 2
+// columns of 12 boxes of edge 2 m, each layer 0.35 m further out along x and z, dropped from 1 m
+// gaps. The top 5 boxes of a column already overhang the box under them: every column topples.
+// Figure: mean box centre height after kColumnsSeconds; reference: stock SI with 4 sub-steps.
+
+constexpr double kColumnsSeconds = 5.0;
+constexpr double kColumnsRelative = 0.25;  // band: within 25% of the reference ...
+constexpr double kColumnsAbsoluteEdges = 0.25;  // ... or a quarter box edge, whichever is wider
+constexpr double kColumnsCollapsedShare = 0.25;  // and below a quarter of the initial mean height
+
+struct ColumnsRun
+{
+	double meanHeight = 0;  // m
+	double initialMeanHeight = 0;  // m
+	double restingHeight = 0;  // m, centre of a box lying on the ground
+	double msPerStep = 0;
+	bool nonFinite = false;
+};
+
+ColumnsRun runColumns(const harness::SolverSpec& spec)
+{
+	harness::Trial trial(spec, "leaning_columns");
+	ColumnsRun run;
+	run.initialMeanHeight = trial.scene().facts.at("initialMeanHeight");
+	run.restingHeight = trial.scene().facts.at("restingHeight");
+	const int frames = int(kColumnsSeconds * kFrameRate + 0.5);
+	for (int k = 0; k < frames; ++k)
+		trial.step();
+	for (const btRigidBody* b : trial.bodies())
+		run.meanHeight += b->getCenterOfMassPosition().y() / double(trial.bodies().size());
+	const harness::TrialSummary summary = trial.summary();
+	run.msPerStep = summary.msPerStep;
+	run.nonFinite = summary.nonFinite;
+	return run;
+}
+
+const ColumnsRun& columnsReference()
+{
+	static const ColumnsRun reference = runColumns(stockReference(4, 10));
+	return reference;
+}
+
+Verdict columnsCase(const harness::SolverSpec& spec)
+{
+	const ColumnsRun& ref = columnsReference();
+	const ColumnsRun run = runColumns(spec);
+	Verdict v;
+	v.unit = "m";
+	v.figure = run.meanHeight;
+	v.expected = ref.meanHeight;
+	v.msPerStep = run.msPerStep;
+	const double band = std::max(kColumnsRelative * ref.meanHeight, kColumnsAbsoluteEdges * 2 * run.restingHeight);
+	const double ceiling = kColumnsCollapsedShare * run.initialMeanHeight;
+	v.pass = !run.nonFinite && std::isfinite(run.meanHeight) && std::fabs(run.meanHeight - ref.meanHeight) <= band && run.meanHeight < ceiling;
+	v.detail = format("mean box height after %.0f s %.2f m (start %.2f m, lying flat %.2f m); ", kColumnsSeconds, run.meanHeight,
+					  run.initialMeanHeight, run.restingHeight) +
+			   format("reference (SI 4 sub-steps) %.2f m +- %.2f m, must be < %.2f m", ref.meanHeight, band, ceiling);
+	return v;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// 4. Heavy-topped column. benchmark/heavy_top_column: 10 unit cubes, the top one 1000 kg, the others
+// 1 kg, each resting on the one below (10 um overlap). Statics: aligned, it stands; a resting system
+// gains no energy. Pass: every cube within 1 cm of its start for 5 s, no cube ever 1 cm above its
+// start, and the kinetic energy never above the top cube's weight times one rest overlap
+// (m_top g 10 um = 1e-3 m_top g 1 cm: the most that closing one overlap could release).
+
+constexpr double kColumnSeconds = 5.0;
+constexpr double kColumnDrift = 0.01;   // m
+constexpr double kRestOverlap = 1e-5;   // m, the scenes' resting overlap (SceneBuild.h)
+
+Verdict heavyColumnCase(const harness::SolverSpec& spec)
+{
+	harness::Trial trial(spec, "heavy_top_column");
+	const double topMass = trial.scene().facts.at("topMass");
+	const double energyBound = topMass * trial.simulation().gravity() * kRestOverlap;
+	std::vector<double> y0;
+	for (const btRigidBody* b : trial.bodies())
+		y0.push_back(b->getCenterOfMassPosition().y());
+	double maxRise = 0, maxEnergy = 0;
+	const int frames = int(kColumnSeconds * kFrameRate + 0.5);
+	for (int k = 0; k < frames; ++k)
+	{
+		trial.step();
+		for (size_t i = 0; i < y0.size(); ++i)
+		{
+			const double rise = trial.bodies()[i]->getCenterOfMassPosition().y() - y0[i];
+			maxRise = std::isfinite(rise) ? std::max(maxRise, rise) : INFINITY;
+		}
+		const double energy = trial.series().kineticEnergy.back();
+		maxEnergy = std::isfinite(energy) ? std::max(maxEnergy, energy) : INFINITY;
+	}
+	const harness::TrialSummary summary = trial.summary();
+	Verdict v;
+	v.unit = "J";
+	v.figure = summary.nonFinite ? INFINITY : maxEnergy;  // headline: the largest kinetic energy; physics: none
+	v.expected = 0;
+	v.msPerStep = summary.msPerStep;
+	v.pass = !summary.nonFinite && summary.maxDrift <= kColumnDrift && maxRise <= kColumnDrift && maxEnergy <= energyBound;
+	v.detail = format("max drift %.4f m (<= %.2f), max rise %.4f m (<= %.2f), ", summary.maxDrift, kColumnDrift, maxRise, kColumnDrift) +
+			   format("max kinetic energy %.3g J (<= %.3g J = m_top g 10 um)", maxEnergy, energyBound);
+	return v;
+}
+}  // namespace
+
+void addDynamicsCases(std::vector<TruthCase>& cases)
+{
+	cases.push_back({"SeesawTipTime", "dynamics",
+					 "a plank on a ridge with 5 kg on its left end and 1 kg on its right tips left, its left end dropping 10 cm within 25% of the time "
+					 "a converged solver (SI 8 sub-steps x 50 iterations) takes",
+					 seesawCase});
+	cases.push_back({"RagdollPileCollapses", "dynamics",
+					 "passive ragdolls (no muscles) dropped in a pile fold and fall: mean head height after 5 s within 25% (or 0.1 m) of a converged "
+					 "solver's (SI 4 sub-steps) and below half a standing ragdoll's",
+					 ragdollCase});
+	cases.push_back({"LeaningColumnsTopple", "topple",
+					 "columns whose layers each lean 0.35 m further out (BenchmarkDemo's 3000 boxes) overhang their support and topple: mean box "
+					 "height after 5 s within 25% of a converged solver's (SI 4 sub-steps) and below a quarter of the start",
+					 columnsCase});
+	cases.push_back({"HeavyTopColumnStands", "dynamics",
+					 "an aligned column of 10 unit cubes under a 1000x heavier top cube stands: every cube within 1 cm for 5 s, none rises 1 cm, and "
+					 "the kinetic energy never exceeds m_top g times one 10 um rest overlap",
+					 heavyColumnCase});
 }
 }  // namespace truth

@@ -102,7 +102,7 @@ using CreateFn = std::unique_ptr<SceneContent> (*)(btDiscreteDynamicsWorld& worl
 /// One row of the registry table.
 struct SceneEntry
 {
-	std::string category;     ///< "basic", "seed" (from the source paper), "hard" or "truth" (the truth suite)
+	std::string category;     ///< "basic", "seed" (from the source paper), "hard", "truth" (the truth suite) or "benchmark" (after BenchmarkDemo, PyBullet)
 	std::string name;         ///< unique, snake_case, e.g. "pyramid"
 	std::string description;  ///< one line
 	CreateFn create;
