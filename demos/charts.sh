@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates every chart of README from scratch: installs what is missing (Debian packages:
+# Regenerates every chart of docs/measurements.md from scratch: installs what is missing (Debian packages:
 # tests/install-deps.sh plus python3-matplotlib), builds bsp_sweep (Release, float), runs the three
 # studies under nice and plots them with Debian's /usr/bin/python3.
 #   results (CSV + JSON): build/sweep/        charts (PNG + SVG): demos/charts/images/
@@ -23,7 +23,7 @@ wait "$first"
 nice -n 10 "$sweep" scaling --out "$results"
 nice -n 10 "$sweep" towers --out "$results"
 /usr/bin/python3 "$root/demos/charts/plot_charts.py" "$results" "$root/demos/charts/images"
-# The raw results README's readings come from, kept next to the charts.
+# The raw results docs/measurements.md's readings come from, kept next to the charts.
 mkdir -p "$root/demos/charts/results"
 cp "$results"/scaling.* "$results"/towers.* "$results"/headline.txt "$root/demos/charts/results/"
 for part in "$results"/pareto-*; do cp "$part/pareto.csv" "$root/demos/charts/results/$(basename "$part").csv"; cp "$part/pareto.json" "$root/demos/charts/results/$(basename "$part").json"; done
