@@ -62,14 +62,9 @@ Options parseArguments(int argc, char** argv)
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string a = argv[i];
-		auto value = [&]() -> std::string {
-			if (i + 1 >= argc) fail("missing value after " + a);
-			return argv[++i];
-		};
-		if (o.plugin.parse(argc, argv, i)) continue;
-		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
-		else if (a == "--scene") o.scene = value();
+		auto value = [&] { return harness::optionValue(argc, argv, i); };
+		if (harness::parseSharedOption(argc, argv, i, o.plugin, usage)) continue;
+		if (a == "--scene") o.scene = value();
 		else if (a == "--solvers") o.solvers = harness::splitList(value(), "solver");
 		else if (a == "--iterations") o.iterations = harness::parseIntegerList(value(), "iteration");
 		else if (a == "--duration") o.duration = harness::parseNumber(value());

@@ -1,9 +1,12 @@
 #include "harness/CommandLine.h"
 
+#include <scenes/Registry.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <iostream>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -185,6 +188,28 @@ void PluginFlags::printUsage(std::ostream& out)
 		head.resize(std::max<size_t>(head.size() + 1, 24), ' ');
 		out << head << f.help << "\n";
 	}
+}
+
+std::string optionValue(int argc, char** argv, int& i)
+{
+	if (i + 1 >= argc) throw std::invalid_argument(std::string("missing value after ") + argv[i]);
+	return argv[++i];
+}
+
+bool parseSharedOption(int argc, char** argv, int& i, PluginFlags& plugin, void (*usage)())
+{
+	const std::string a = argv[i];
+	if (a == "--help" || a == "-h")
+	{
+		usage();
+		std::exit(0);
+	}
+	if (a == "--list")
+	{
+		scenes::printRegistry(std::cout);
+		std::exit(0);
+	}
+	return plugin.parse(argc, argv, i);
 }
 
 std::string pluginSettingsLabel(const btShockPropagationSettings& settings)

@@ -83,14 +83,9 @@ Options parseArguments(int argc, char** argv)
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string a = argv[i];
-		auto value = [&]() -> std::string {
-			if (i + 1 >= argc) fail("missing value after " + a);
-			return argv[++i];
-		};
-		if (o.plugin.parse(argc, argv, i)) continue;
-		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
-		else if (a == "--scene") o.setup.scene = value();
+		auto value = [&] { return harness::optionValue(argc, argv, i); };
+		if (harness::parseSharedOption(argc, argv, i, o.plugin, usage)) continue;
+		if (a == "--scene") o.setup.scene = value();
 		else if (a == "--param") o.setup.params.push_back(harness::parseSceneParam(value()));
 		else if (a == "--solvers") o.solvers = harness::splitList(value(), "solver");
 		else if (a == "--iterations")

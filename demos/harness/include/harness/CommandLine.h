@@ -50,6 +50,15 @@ private:
 	std::vector<Given> m_given;
 };
 
+/// The text after option argv[i], advancing i; throws std::invalid_argument ("missing value after
+/// --x") when there is none.
+std::string optionValue(int argc, char** argv, int& i);
+
+/// The options bsp_demo and bsp_viewer share, read at argv[i]: --help / -h (calls `usage` and exits
+/// with 0), --list (prints the scene registry and exits with 0) and the plugin flags (into
+/// `plugin`, advancing i). True if argv[i] was one of them.
+bool parseSharedOption(int argc, char** argv, int& i, PluginFlags& plugin, void (*usage)());
+
 /// " f=0.5" plus " <flag label>" for every plugin flag whose value differs from the default,
 /// e.g. " f=0.1 fix=keep bfs" (SolverSpec::label()).
 std::string pluginSettingsLabel(const btShockPropagationSettings& settings);
