@@ -1,6 +1,7 @@
 # Debian's BulletConfig.cmake has relative include paths and lists libraries the package does
-# not ship (bullet-notes.md), so Bullet is found through pkg-config and wrapped in one imported
-# target, bsp::bullet. Installed next to BulletShockPropagationConfig.cmake and used by it.
+# not ship (docs/bullet-facts.md), so Bullet is found through pkg-config and wrapped in one
+# imported target, bsp::bullet, for the build only: the installed package does not use it
+# (plugin/CMakeLists.txt).
 include_guard(GLOBAL)
 find_package(PkgConfig REQUIRED)
 if(BSP_DOUBLE_PRECISION)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates every chart of README from scratch: installs what is missing (Debian packages:
-# tests/install-deps.sh plus python3-matplotlib), builds bsp_sweep and bsp_truth (Release, float),
-# runs the three studies and the truth suite (bsp_truth: every truth case under every solver
-# configuration, about 30 s) under nice and plots them with Debian's /usr/bin/python3.
+# Regenerates every chart of docs/measurements.md from scratch: installs what is missing (Debian
+# packages: tests/install-deps.sh plus python3-matplotlib), builds bsp_sweep and bsp_truth (Release,
+# float), runs the three studies and the truth suite (bsp_truth: every truth case under every solver
+# configuration) under nice and plots them with Debian's /usr/bin/python3.
 #   results (CSV + JSON): build/sweep/        charts (PNG + SVG): demos/charts/images/
 # The speed-against-accuracy sweep runs as two processes over two halves of the scene list (the
 # machine has two cores); inside each scene every configuration is stepped in lockstep, so load
@@ -25,7 +25,7 @@ nice -n 10 "$sweep" scaling --out "$results"
 nice -n 10 "$sweep" towers --out "$results"
 nice -n 10 "$build/demos/truth/bsp_truth" --csv "$results/truth.csv" --md "$results/truth.md"
 /usr/bin/python3 "$root/demos/charts/plot_charts.py" "$results" "$root/demos/charts/images"
-# The raw results README's readings come from, kept next to the charts.
+# The raw results docs/measurements.md's readings come from, kept next to the charts.
 mkdir -p "$root/demos/charts/results"
 cp "$results"/scaling.* "$results"/towers.* "$results"/truth.* "$results"/headline.txt "$root/demos/charts/results/"
 for part in "$results"/pareto-*; do cp "$part/pareto.csv" "$root/demos/charts/results/$(basename "$part").csv"; cp "$part/pareto.json" "$root/demos/charts/results/$(basename "$part").json"; done

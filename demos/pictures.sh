@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates README's pictures (docs/pictures/*.png) with bsp_viewer --headless: offscreen
-# through EGL on Mesa's software renderer, no display or GPU needed. Installs what is missing and
-# builds first, like demos/run.sh. Each picture: columns = solvers, rows = moments in time.
+# Regenerates the pictures of README and docs/measurements.md (docs/pictures/*.png) with
+# bsp_viewer --headless: offscreen through EGL on Mesa's software renderer, no display or GPU
+# needed. Installs what is missing and builds first (the float build of tests/run.sh, with the
+# viewer). Each picture: columns = solvers, rows = moments in time.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/tests/install-deps.sh"

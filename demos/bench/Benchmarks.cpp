@@ -10,12 +10,13 @@
 #include <BulletShockPropagation/btShockPropagationSettings.h>
 #include <BulletShockPropagation/btStackLayers.h>
 #include <harness/Metrics.h>
-#include <harness/Simulation.h>
+#include <harness/Trial.h>
 #include <scenes/Registry.h>
 
 #include <benchmark/benchmark.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -28,25 +29,16 @@ constexpr int kMaxMLCPBodies = 100;  ///< Dantzig is O(rows^3): bigger scenes ta
 /// penetration counters of two solvers on a scene describe the same simulated time.
 constexpr int kMeasuredSteps = 300;
 
-struct World
+/// A registry scene under the named solver (bsp_demo's names), settled for kSettleSteps frames.
+std::unique_ptr<harness::Trial> settledTrial(const std::string& solver, const std::string& scene)
 {
-	std::unique_ptr<harness::Simulation> sim;
-	std::unique_ptr<scenes::SceneContent> scene;
-	World(const std::string& solver, const std::string& name)
-	{
-		harness::SolverSpec spec;
-		std::string error;
-		harness::parseSolverKind(solver, spec, error);
-		sim.reset(new harness::Simulation(spec));
-		scene = scenes::createScene(sim->world(), name);
-		for (int i = 0; i < kSettleSteps; ++i) sim->step();
-	}
-	~World()
-	{
-		scene.reset();
-		sim.reset();
-	}
-};
+	harness::SolverSpec spec;
+	std::string error;
+	if (!harness::parseSolverKind(solver, spec, error)) throw std::invalid_argument(error);
+	std::unique_ptr<harness::Trial> trial(new harness::Trial(spec, scene));
+	for (int i = 0; i < kSettleSteps; ++i) trial->simulation().step();
+	return trial;
+}
 
 /// The world's manifolds with their bodies' node numbers (the scene's dynamic bodies; static ones
 /// are roots), as the plugin's solver hands them to btContactGraph.
@@ -61,10 +53,10 @@ struct ManifoldList
 	std::vector<Entry> entries;
 };
 
-ManifoldList manifoldsOf(World& w)
+ManifoldList manifoldsOf(harness::Trial& w)
 {
 	ManifoldList list;
-	const std::vector<btRigidBody*> bodies = w.scene->dynamicBodies();
+	const std::vector<btRigidBody*>& bodies = w.bodies();
 	std::unordered_map<const btCollisionObject*, int> node;
 	for (size_t i = 0; i < bodies.size(); ++i) node[bodies[i]] = int(i);
 	list.numBodies = int(bodies.size());
@@ -72,7 +64,7 @@ ManifoldList manifoldsOf(World& w)
 		const auto found = node.find(o);
 		return found == node.end() ? int(BT_CONTACT_GRAPH_ROOT) : found->second;
 	};
-	btDispatcher& dispatcher = *w.sim->world().getDispatcher();
+	btDispatcher& dispatcher = *w.simulation().world().getDispatcher();
 	for (int i = 0; i < dispatcher.getNumManifolds(); ++i)
 	{
 		const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
@@ -83,8 +75,8 @@ ManifoldList manifoldsOf(World& w)
 
 void graphAndLayers(benchmark::State& state, const std::string& scene)
 {
-	World w("si", scene);
-	const ManifoldList list = manifoldsOf(w);
+	const std::unique_ptr<harness::Trial> w = settledTrial("si", scene);
+	const ManifoldList list = manifoldsOf(*w);
 	const btShockPropagationSettings settings;
 	const btVector3 up(0, 1, 0);
 	btContactGraph graph;
@@ -106,12 +98,12 @@ void graphAndLayers(benchmark::State& state, const std::string& scene)
 
 void step(benchmark::State& state, const std::string& scene, const std::string& solver)
 {
-	World w(solver, scene);
-	const std::vector<btRigidBody*> bodies = w.scene->dynamicBodies();
+	const std::unique_ptr<harness::Trial> w = settledTrial(solver, scene);
+	const std::vector<btRigidBody*>& bodies = w->bodies();
 	const harness::DriftTracker drift(bodies);  // from the settled state
-	for (auto _ : state) w.sim->step();
+	for (auto _ : state) w->simulation().step();  // the step alone: no metrics in the timed loop
 	state.counters["drift_mm"] = drift.maxDrift() * 1e3;
-	state.counters["pen_mm"] = harness::maxPenetration(*w.sim->world().getDispatcher()) * 1e3;
+	state.counters["pen_mm"] = harness::maxPenetration(*w->simulation().world().getDispatcher()) * 1e3;
 	state.counters["bodies"] = double(bodies.size());
 }
 }  // namespace
@@ -126,8 +118,8 @@ int main(int argc, char** argv)
 		{
 			if (std::string(solver) == "mlcp")
 			{
-				World probe("si", e.name);
-				if (int(probe.scene->dynamicBodies().size()) > kMaxMLCPBodies) continue;
+				const harness::Trial probe(harness::SolverSpec(), e.name);
+				if (int(probe.bodies().size()) > kMaxMLCPBodies) continue;
 			}
 			benchmark::RegisterBenchmark(("Step/" + e.name + "/" + solver).c_str(), step, e.name, std::string(solver))->Unit(benchmark::kMillisecond)->Iterations(kMeasuredSteps);
 		}

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Charts for README from bsp_sweep's and bsp_truth's raw results (demos/charts.sh runs it).
+"""Charts for docs/measurements.md from bsp_sweep's and bsp_truth's raw results (demos/charts.sh runs it).
 
 usage: plot_charts.py RESULTS_DIR CHARTS_DIR
 

@@ -59,7 +59,7 @@ void writeCsv(std::ostream& out, const std::string& scene, const Trials& trials,
 	{
 		const harness::SolverSpec& spec = t->simulation().spec();
 		const harness::TrialSummary s = t->summary();
-		out << scene << "," << spec.name() << "," << spec.iterations << "," << spec.weighting << "," << spec.substeps << ","
+		out << scene << "," << spec.name() << "," << spec.iterations << "," << spec.settings.m_weighting << "," << spec.substeps << ","
 			<< s.standing << "," << s.collapseTime << "," << s.maxDrift << "," << s.rmsDrift << "," << s.maxPenetration << ","
 			<< s.kineticEnergyLastSecond << "," << s.groundOverWeightLastSecond << "," << s.msPerStep << "," << s.layers << "\n";
 	}
@@ -78,7 +78,7 @@ void writeJson(std::ostream& out, const std::string& scene, double timeStep, dou
 			for (size_t k = 0; k < v.size(); ++k) out << (k ? "," : "") << v[k];
 			out << "]";
 		};
-		out << (i ? "," : "") << "{\"solver\":\"" << spec.label() << "\",\"iterations\":" << spec.iterations << ",\"f\":" << spec.weighting
+		out << (i ? "," : "") << "{\"solver\":\"" << spec.label() << "\",\"iterations\":" << spec.iterations << ",\"f\":" << spec.settings.m_weighting
 			<< ",\"substeps\":" << spec.substeps << ",\"standing\":" << (s.standing ? "true" : "false") << ",\"collapse_s\":" << s.collapseTime
 			<< ",\"max_drift_m\":" << s.maxDrift << ",\"rms_drift_m\":" << s.rmsDrift << ",\"max_penetration_m\":" << s.maxPenetration
 			<< ",\"ke_last_second_j\":" << s.kineticEnergyLastSecond << ",\"ground_over_weight\":" << s.groundOverWeightLastSecond

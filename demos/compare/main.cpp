@@ -24,17 +24,12 @@ struct Options
 	std::string scene = "wall";
 	std::vector<std::string> solvers{"si", "sp"};
 	std::vector<int> iterations{10};
-	std::vector<double> weightings{btShockPropagationSettings().m_weighting};
 	double duration = 10.0;
 	double timeStep = 1.0 / 60.0;
 	std::vector<std::pair<std::string, double>> params;
 	std::string csvPath, jsonPath;
 	bool progress = true;
-	int fixationMode = -1;
-	bool globalSecondCorrection = false;
-	std::vector<double> slops{-1};
-	bool supportOrdering = true;
-	int weightSweeps = -1;
+	harness::PluginFlags plugin;  ///< --f, --fixation, --slop, ...: each combination is one plugin run
 	bool seed = false;
 };
 
@@ -51,19 +46,14 @@ void usage()
 				 "  --solvers A,B,...     " << harness::solverKindNames() << "\n"
 				 "                        (default si,sp)\n"
 				 "  --iterations N,M,...  PGS iterations, each run for every solver (default 10)\n"
-				 "  --f F,G,...           plugin weighting values in [0,1] (default 0.5)\n"
 				 "  --duration S          simulated seconds (default 10)\n"
 				 "  --dt S                time step in seconds (default 1/60)\n"
 				 "  --param NAME=VALUE    scene parameter (repeatable); --list shows them\n"
 				 "  --csv FILE            summary table as CSV\n"
 				 "  --json FILE           summary and per-step series as JSON\n"
-				 "  --fixation MODE       plugin fixation: twist (default), linear, keep, zero\n"
-				 "  --global-correction   plugin: the paper's un-layered second correction\n"
-				 "  --slop M,N,...        plugin: correction slop values in metres (default: 0.18 g dt^2)\n"
-				 "  --bfs-layers          plugin: plain BFS layers, no support ordering (D12 off)\n"
-				 "  --weight-sweeps N     plugin with weight feeling (sp-wf): sweeps per loaded layer (default 40)\n"
 				 "  --no-progress         no progress bar\n"
 				 "  --seed                the source presentation's studies as tables (--csv: every row)\n";
+	harness::PluginFlags::printUsage(std::cout);
 }
 
 Options parseArguments(int argc, char** argv)
@@ -72,16 +62,11 @@ Options parseArguments(int argc, char** argv)
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string a = argv[i];
-		auto value = [&]() -> std::string {
-			if (i + 1 >= argc) fail("missing value after " + a);
-			return argv[++i];
-		};
-		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
-		else if (a == "--scene") o.scene = value();
+		auto value = [&] { return harness::optionValue(argc, argv, i); };
+		if (harness::parseSharedOption(argc, argv, i, o.plugin, usage)) continue;
+		if (a == "--scene") o.scene = value();
 		else if (a == "--solvers") o.solvers = harness::splitList(value(), "solver");
 		else if (a == "--iterations") o.iterations = harness::parseIntegerList(value(), "iteration");
-		else if (a == "--f") o.weightings = harness::parseNumberList(value(), "f");
 		else if (a == "--duration") o.duration = harness::parseNumber(value());
 		else if (a == "--dt") o.timeStep = harness::parseNumber(value());
 		else if (a == "--param") o.params.push_back(harness::parseSceneParam(value()));
@@ -89,24 +74,6 @@ Options parseArguments(int argc, char** argv)
 		else if (a == "--json") o.jsonPath = value();
 		else if (a == "--no-progress") o.progress = false;
 		else if (a == "--seed") o.seed = true;
-		else if (a == "--global-correction") o.globalSecondCorrection = true;
-		else if (a == "--slop") o.slops = harness::parseNumberList(value(), "slop");
-		else if (a == "--bfs-layers") o.supportOrdering = false;
-		else if (a == "--weight-sweeps")
-		{
-			const std::vector<int> n = harness::parseIntegerList(value(), "weight-sweeps");
-			if (n.size() != 1 || n[0] < 1) fail("--weight-sweeps wants one count >= 1");
-			o.weightSweeps = n[0];
-		}
-		else if (a == "--fixation")
-		{
-			const std::string m = value();
-			if (m == "keep") o.fixationMode = BT_FIXATION_KEEP_VELOCITY;
-			else if (m == "zero") o.fixationMode = BT_FIXATION_ZERO_VELOCITY;
-			else if (m == "linear") o.fixationMode = BT_FIXATION_KEEP_LINEAR_VELOCITY;
-			else if (m == "twist") o.fixationMode = BT_FIXATION_KEEP_LINEAR_AND_TWIST;
-			else fail("unknown fixation mode '" + m + "'; valid: twist, linear, keep, zero");
-		}
 		else fail("unknown option '" + a + "'");
 	}
 	if (!scenes::findScene(o.scene)) fail("unknown scene '" + o.scene + "'; valid scenes: " + scenes::sceneNames());
@@ -114,10 +81,6 @@ Options parseArguments(int argc, char** argv)
 	if (!(o.timeStep > 0 && o.timeStep <= 1)) fail("--dt must be in (0, 1] seconds");
 	for (int n : o.iterations)
 		if (n < 1) fail("--iterations must be >= 1");
-	for (double f : o.weightings)
-		if (!(f >= 0 && f <= 1)) fail("--f values must be in [0, 1]");
-	for (double slop : o.slops)
-		if (!(slop >= 0 || slop == -1)) fail("--slop values must be >= 0 metres");
 	for (const std::string& path : {o.csvPath, o.jsonPath})
 	{
 		if (path.empty()) continue;
@@ -147,23 +110,15 @@ std::vector<harness::SolverSpec> expand(const Options& o)
 		harness::SolverSpec base;
 		std::string error;
 		if (!harness::parseSolverKind(name, base, error)) fail(error);
-		const bool shock = base.kind == harness::SolverKind::ShockWorld || base.kind == harness::SolverKind::ShockSolverOnly;
 		for (int n : o.iterations)
 		{
-			for (size_t k = 0; k < (shock ? o.weightings.size() : 1); ++k)
+			for (const btShockPropagationSettings& settings : o.plugin.expand(base.settings))
 			{
-				for (size_t j = 0; j < (shock ? o.slops.size() : 1); ++j)
-				{
-					harness::SolverSpec s = base;
-					s.iterations = n;
-					s.weighting = o.weightings[k];
-					s.fixationMode = o.fixationMode;
-					s.globalSecondCorrection = o.globalSecondCorrection;
-					s.correctionSlop = o.slops[j];
-					s.supportOrdering = o.supportOrdering;
-					s.weightIterations = o.weightSweeps;
-					specs.push_back(s);
-				}
+				harness::SolverSpec s = base;
+				s.iterations = n;
+				s.settings = settings;
+				specs.push_back(s);
+				if (!s.isPlugin()) break;  // stock solvers: one run per iteration count
 			}
 		}
 	}

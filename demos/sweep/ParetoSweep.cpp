@@ -185,7 +185,7 @@ void runScene(const SceneCase& scene, const ParetoOptions& o, ResultTable& out)
 		out.add("solver", run.variant.label);
 		out.add("family", family);
 		out.add("iterations", run.iterations);
-		out.add("f", run.variant.isPlugin() ? spec.weighting : NAN);
+		out.add("f", spec.isPlugin() ? double(spec.settings.m_weighting) : NAN);
 		out.add("substeps", spec.substeps);
 		out.add("expect_standing", expectStanding ? 1 : 0);
 		out.add("status", run.status);

@@ -12,7 +12,7 @@ Variant variant(const std::string& label, const std::string& kind, double f = 0.
 	v.label = label;
 	std::string error;
 	if (!harness::parseSolverKind(kind, v.spec, error)) throw std::invalid_argument(error);
-	v.spec.weighting = f;
+	v.spec.settings.m_weighting = btScalar(f);
 	v.maxIterations = maxIterations;
 	return v;
 }

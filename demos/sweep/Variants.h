@@ -21,10 +21,6 @@ struct Variant
 	/// the sweep's time; f = 0 and 0.5 keep the full ladder.
 	int maxIterations = 1 << 30;
 	bool isMLCP() const { return spec.kind == harness::SolverKind::MLCPDantzig; }
-	bool isPlugin() const
-	{
-		return spec.kind == harness::SolverKind::ShockWorld || spec.kind == harness::SolverKind::ShockSolverOnly;
-	}
 };
 
 /// Every variant of the sweep, in table order.

@@ -1,4 +1,4 @@
-// bsp_sweep: the measurements behind README's charts (demos/charts.sh runs it, then plots).
+// bsp_sweep: the measurements behind the charts of docs/measurements.md (demos/charts.sh runs it, then plots).
 //   bsp_sweep pareto  --out DIR [--scenes a,b] [--solvers "si,sp f=0.5"] [--iterations 1,10] [--duration S] [--no-reference]
 //   bsp_sweep towers  --out DIR [--heights 2,4] [--max-iterations N] [--duration S]
 //   bsp_sweep scaling --out DIR [--bases 10,20] [--steps N]

@@ -29,29 +29,29 @@ struct BareWorld
 
 TEST(BadInput, NaNVelocityOnOneBodyDoesNotSpreadIntoTheStack)
 {
-	spec::SceneRun run("tower", spec::shock(), {{"n", 5}});
+	harness::Trial run(spec::shock(), "tower", {{"n", 5}});
 	run.run(0.5);
 	btRigidBody* top = run.named("top");
 	top->setLinearVelocity(btVector3(std::numeric_limits<btScalar>::quiet_NaN(), 0, 0));
 	std::vector<btRigidBody*> healthy;
-	for (btRigidBody* b : run.bodies)
+	for (btRigidBody* b : run.bodies())
 		if (b != top) healthy.push_back(b);
 	harness::DriftTracker drift(healthy);
 	run.run(2.0);
 	EXPECT_FALSE(harness::anyNonFinite(healthy));
-	EXPECT_LT(drift.maxDrift(), spec::kMaxDriftMeters);
+	EXPECT_LT(drift.maxDrift(), harness::kStandingDriftMeters);
 }
 
 TEST(BadInput, InfiniteTransformOnOneBodyDoesNotSpread)
 {
-	spec::SceneRun run("tower", spec::shock(), {{"n", 5}});
+	harness::Trial run(spec::shock(), "tower", {{"n", 5}});
 	run.run(0.5);
 	btRigidBody* top = run.named("top");
 	btTransform t = top->getWorldTransform();
 	t.getOrigin().setY(std::numeric_limits<btScalar>::infinity());
 	top->setWorldTransform(t);
 	std::vector<btRigidBody*> healthy;
-	for (btRigidBody* b : run.bodies)
+	for (btRigidBody* b : run.bodies())
 		if (b != top) healthy.push_back(b);
 	run.run(2.0);
 	EXPECT_FALSE(harness::anyNonFinite(healthy));
@@ -59,28 +59,28 @@ TEST(BadInput, InfiniteTransformOnOneBodyDoesNotSpread)
 
 TEST(BadInput, ZeroMassBodyMarkedDynamicActsAsStaticSupport)
 {
-	spec::SceneRun run("tower", spec::shock(), {{"n", 3}});
+	harness::Trial run(spec::shock(), "tower", {{"n", 3}});
 	btRigidBody* bottom = run.named("bottom");
-	run.sim->world().removeRigidBody(bottom);
+	run.simulation().world().removeRigidBody(bottom);
 	bottom->setMassProps(0, btVector3(0, 0, 0));
 	bottom->setCollisionFlags(bottom->getCollisionFlags() & ~btCollisionObject::CF_STATIC_OBJECT);
-	run.sim->world().addRigidBody(bottom);
+	run.simulation().world().addRigidBody(bottom);
 	run.run(2.0);
-	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
-	EXPECT_LT(run.drift->drift(run.named("top")), spec::kMaxDriftMeters);
+	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
+	EXPECT_LT(run.drift().drift(run.named("top")), harness::kStandingDriftMeters);
 }
 
 TEST(BadInput, BodyRemovedBetweenStepsLetsTheBoxesAboveFall)
 {
-	spec::SceneRun run("tower", spec::shock(), {{"n", 5}});
+	harness::Trial run(spec::shock(), "tower", {{"n", 5}});
 	run.run(0.5);
-	btRigidBody* middle = run.bodies[2];
-	run.sim->world().removeRigidBody(middle);
+	btRigidBody* middle = run.bodies()[2];
+	run.simulation().world().removeRigidBody(middle);
 	run.run(2.0);
-	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
-	EXPECT_GT(run.drift->drift(run.named("top")), 0.4);  // fell by about one box height (0.5 m)
-	EXPECT_LT(run.drift->drift(run.named("bottom")), spec::kMaxDriftMeters);
-	run.sim->world().addRigidBody(middle);  // back, so the scene removes it as usual
+	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
+	EXPECT_GT(run.drift().drift(run.named("top")), 0.4);  // fell by about one box height (0.5 m)
+	EXPECT_LT(run.drift().drift(run.named("bottom")), harness::kStandingDriftMeters);
+	run.simulation().world().addRigidBody(middle);  // back, so the scene removes it as usual
 }
 
 TEST(BadInput, EmptyWorldSteps)

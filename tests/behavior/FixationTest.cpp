@@ -58,14 +58,14 @@ TEST(BodyFixation, RowEffectiveMassIsTheFreeBodysAloneByHandComputation)
 {
 	// Three boxes: the middle one is fixated under the top one in layer 1; a row that also counted
 	// the middle box's inverse mass and inertia would be far from the hand value.
-	spec::SceneRun run("tower", spec::shock(), {{"n", 3}});
+	harness::Trial run(spec::shock(), "tower", {{"n", 3}});
 	run.run(spec::kTimeStepSeconds);
-	btRigidBody* top = run.scene->named("top");
-	btRigidBody* middle = run.bodies[1];
+	btRigidBody* top = run.scene().named("top");
+	btRigidBody* middle = run.bodies()[1];
 	const btScalar middleInvMassBefore = middle->getInvMass();
 	const btVector3 middleInvInertiaBefore = middle->getInvInertiaDiagLocal();
 	RowBuilder builder;
-	builder.build(run.sim->world());
+	builder.build(run.simulation().world());
 	btLayerFixationParams params;
 	int checked = 0;
 	for (int i = 0; i < builder.contactRows().size(); ++i)
@@ -96,18 +96,18 @@ TEST(BodyFixation, FixatedBodyIsNotMovedByTheLayerAbove)
 {
 	// Two boxes, f = 0 (no global pass): in layer 1 the bottom box is fixated, so the heavy top
 	// box cannot push it; only its own layer (0, against the ground) changes its velocity.
-	spec::SceneRun run("mass_ratio_tower", spec::shock(10, 0.0), {{"n", 2}, {"ratio", 1000}});
+	harness::Trial run(spec::shock(10, 0.0), "mass_ratio_tower", {{"n", 2}, {"ratio", 1000}});
 	run.run(2.0);
-	EXPECT_LT(run.worstDrift, 1e-3);
-	EXPECT_LT(harness::maxPenetration(*run.sim->world().getDispatcher()), 1e-3);
+	EXPECT_LT(run.maxDrift(), 1e-3);
+	EXPECT_LT(harness::maxPenetration(*run.simulation().world().getDispatcher()), 1e-3);
 }
 
 TEST(BodyFixation, ZeroVelocityModeAlsoHoldsTowerOf20)
 {
-	spec::SceneRun run("tower", spec::shock(), {{"n", 20}});
-	btShockPropagationSettings settings = run.sim->shockSolver()->getSettings();
+	harness::Trial run(spec::shock(), "tower", {{"n", 20}});
+	btShockPropagationSettings settings = run.simulation().shockSolver()->getSettings();
 	settings.m_fixationMode = BT_FIXATION_ZERO_VELOCITY;
-	run.sim->shockSolver()->setSettings(settings);
+	run.simulation().shockSolver()->setSettings(settings);
 	run.run(10.0);
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <string>
 
-using spec::SceneRun;
 
 namespace
 {
@@ -29,7 +28,7 @@ class HardCase : public ::testing::TestWithParam<harness::SolverSpec>
 std::string solverName(const ::testing::TestParamInfo<harness::SolverSpec>& info)
 {
 	if (info.param.kind == harness::SolverKind::StockSI) return "StockSI";
-	return info.param.weightFeeling ? "ShockPropagationWeightFeeling" : "ShockPropagation";
+	return info.param.settings.m_weightFeeling ? "ShockPropagationWeightFeeling" : "ShockPropagation";
 }
 }  // namespace
 
@@ -37,13 +36,13 @@ TEST_P(HardCase, SeesawTipsToTheHeavySideFirst)
 {
 	// The first clear tilt (3 degrees) must lower the -x end, under the stack. Later the stack may
 	// slide off the tipped plank and the light box tip it back (stock SI does), which is physics too.
-	SceneRun run("seesaw", GetParam());
-	ASSERT_LT(run.scene->facts.at("heavySide"), 0);
+	harness::Trial run(GetParam(), "seesaw");
+	ASSERT_LT(run.scene().facts.at("heavySide"), 0);
 	const btRigidBody* plank = run.named("plank");
 	double rise = 0;  // y of the plank's +x axis: > 0 when the +x end is higher
 	for (int i = 0; i < 240 && std::fabs(rise) < std::sin(0.05); ++i)
 	{
-		run.sim->step();
+		run.simulation().step();
 		rise = plank->getWorldTransform().getBasis().getColumn(0).y();
 	}
 	EXPECT_GT(rise, std::sin(0.05)) << "the plank did not tip towards the heavy stack within 4 s";
@@ -51,58 +50,62 @@ TEST_P(HardCase, SeesawTipsToTheHeavySideFirst)
 
 TEST_P(HardCase, RampBoxesSlideBelowTanAngleAndStickAbove)
 {
-	SceneRun run("friction_ramp", GetParam());
-	const int count = int(run.scene->facts.at("count"));
-	const double tanAngle = run.scene->facts.at("tanAngle");
+	harness::Trial run(GetParam(), "friction_ramp");
+	const int count = int(run.scene().facts.at("count"));
+	const double tanAngle = run.scene().facts.at("tanAngle");
 	run.run(1.5);
 	for (int k = 0; k < count; ++k)
 	{
 		const btRigidBody* box = run.named("box" + std::to_string(k));
-		const double mu = run.scene->facts.at("mu" + std::to_string(k));
-		const double moved = run.drift->drift(box);
+		const double mu = run.scene().facts.at("mu" + std::to_string(k));
+		const double moved = run.drift().drift(box);
 		if (mu < tanAngle - 0.05)
+		{
 			EXPECT_GT(moved, 0.5) << "box with mu " << mu << " < tan(angle) " << tanAngle << " should slide";
+		}
 		else if (mu > tanAngle + 0.05)
+		{
 			EXPECT_LT(moved, 0.01) << "box with mu " << mu << " > tan(angle) " << tanAngle << " should stick";
+		}
 	}
 }
 
 TEST_P(HardCase, OverlapRecoveryEndsSeparatedWithoutFlinging)
 {
-	SceneRun run("overlap_recovery", GetParam());
-	const double size = run.scene->facts.at("size");
-	const double overlap = run.scene->facts.at("overlapDepth");
+	harness::Trial run(GetParam(), "overlap_recovery");
+	const double size = run.scene().facts.at("size");
+	const double overlap = run.scene().facts.at("overlapDepth");
 	double fastest = 0;
 	for (int i = 0; i < 120; ++i)
 	{
-		run.sim->step();
-		fastest = std::max(fastest, harness::maxSpeed(run.bodies));
+		run.simulation().step();
+		fastest = std::max(fastest, harness::maxSpeed(run.bodies()));
 	}
-	EXPECT_LT(harness::maxPenetration(*run.sim->world().getDispatcher()), 0.005) << "m, still overlapping after 2 s";
+	EXPECT_LT(harness::maxPenetration(*run.simulation().world().getDispatcher()), 0.005) << "m, still overlapping after 2 s";
 	// Separating needs each body to move by at most the overlaps below it; nothing should fly.
 	EXPECT_LT(fastest, 2.0) << "m/s: a body was flung";
-	EXPECT_LT(harness::maxSpeed(run.bodies), 0.05) << "m/s: the pile should be at rest";
-	for (const btRigidBody* b : run.bodies) EXPECT_LT(run.drift->drift(b), 4 * overlap + size) << "a body left the pile";
+	EXPECT_LT(harness::maxSpeed(run.bodies()), 0.05) << "m/s: the pile should be at rest";
+	for (const btRigidBody* b : run.bodies()) EXPECT_LT(run.drift().drift(b), 4 * overlap + size) << "a body left the pile";
 }
 
 TEST_P(HardCase, DoorWithUnequalColumnsStandsWithoutJamming)
 {
-	SceneRun run("door", GetParam());
+	harness::Trial run(GetParam(), "door");
 	double peakEnergy = 0;
 	for (int i = 0; i < 300; ++i)
 	{
-		run.sim->step();
-		peakEnergy = std::max(peakEnergy, harness::kineticEnergy(run.bodies));
+		run.simulation().step();
+		peakEnergy = std::max(peakEnergy, harness::kineticEnergy(run.bodies()));
 	}
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 	// A jammed lintel is violent (BFS-only layering measured 145 J); stock SI's settling, 0.018 J.
 	EXPECT_LT(peakEnergy, 0.05) << "J: the lintel jammed or jumped";
-	EXPECT_LT(harness::maxPenetration(*run.sim->world().getDispatcher()), 0.005);
+	EXPECT_LT(harness::maxPenetration(*run.simulation().world().getDispatcher()), 0.005);
 }
 
 TEST_P(HardCase, DominoRowTopplesToTheLast)
 {
-	SceneRun run("domino_row", GetParam());
+	harness::Trial run(GetParam(), "domino_row");
 	run.run(5.0);
 	EXPECT_GT(tilt(run.named("first")), 0.5);
 	EXPECT_GT(tilt(run.named("last")), 0.5) << "rad: the chain reaction stopped before the last domino";
@@ -110,12 +113,12 @@ TEST_P(HardCase, DominoRowTopplesToTheLast)
 
 TEST_P(HardCase, HingeBridgeSagsToRestAndItsJointsHold)
 {
-	SceneRun run("hinge_bridge", GetParam());
-	const double deckHeight = run.scene->facts.at("deckHeight");
+	harness::Trial run(GetParam(), "hinge_bridge");
+	const double deckHeight = run.scene().facts.at("deckHeight");
 	run.run(5.0);
 	EXPECT_LT(run.named("middlePlank")->getCenterOfMassPosition().y(), deckHeight) << "the bridge must sag";
 	EXPECT_GT(run.named("middlePlank")->getCenterOfMassPosition().y(), 0.0) << "the bridge must not reach the ground";
-	for (btTypedConstraint* c : run.scene->constraints())
+	for (btTypedConstraint* c : run.scene().constraints())
 	{
 		btHingeConstraint* hinge = dynamic_cast<btHingeConstraint*>(c);
 		ASSERT_NE(hinge, nullptr);
@@ -128,16 +131,16 @@ TEST_P(HardCase, HingeBridgeSagsToRestAndItsJointsHold)
 		// lets go opens without bound.
 		EXPECT_LT((a - b).length(), 0.09) << "m: a hinge came apart";
 	}
-	EXPECT_LT(harness::maxSpeed(run.bodies), 0.2) << "m/s: the bridge should have settled";
+	EXPECT_LT(harness::maxSpeed(run.bodies()), 0.2) << "m/s: the bridge should have settled";
 }
 
 TEST_P(HardCase, LeaningStackWhoseBoxesOverhangHalfTopples)
 {
 	// Every box overhangs the one below by more than half its edge: each one tips on its own.
-	SceneRun run("leaning_tower", GetParam(), {{"n", 4}, {"shift", 0.55}});
-	ASSERT_EQ(run.scene->facts.at("expectFalls"), 1);
+	harness::Trial run(GetParam(), "leaning_tower", {{"n", 4}, {"shift", 0.55}});
+	ASSERT_EQ(run.scene().facts.at("expectFalls"), 1);
 	run.run(3.0);
-	EXPECT_GT(run.drift->drift(run.named("top")), 0.5);
+	EXPECT_GT(run.drift().drift(run.named("top")), 0.5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, HardCase, ::testing::Values(spec::shock(), spec::weightFeeling(), spec::stock(10)), solverName);
@@ -149,18 +152,18 @@ TEST(HardCaseShock, LeaningTowerWithCentreOfMassOutsideTheBaseFallsUnderStockSI)
 	// The registry default: boxes shifted 0.3 of an edge, each stable on the one below, the stack as
 	// a whole not. Stock SI topples it. Without weight feeling the plugin does not (every layer sees
 	// only the box above it); issue 7 asserts the plugin on this scene.
-	SceneRun run("leaning_tower", spec::stock(10));
-	ASSERT_EQ(run.scene->facts.at("expectFalls"), 1);
+	harness::Trial run(spec::stock(10), "leaning_tower");
+	ASSERT_EQ(run.scene().facts.at("expectFalls"), 1);
 	run.run(4.0);
-	EXPECT_GT(run.drift->drift(run.named("top")), 0.5);
+	EXPECT_GT(run.drift().drift(run.named("top")), 0.5);
 }
 
 TEST(HardCaseShock, LargeSlabOnTwoSmallCubesStands)
 {
 	// Mass ratio 100; stock SI at 10 iterations lets the slab sink and slide (24 cm).
-	SceneRun run("large_on_small", spec::shock());
+	harness::Trial run(spec::shock(), "large_on_small");
 	run.run(5.0);
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
 TEST(HardCaseShock, CardHouseStands)
@@ -168,29 +171,29 @@ TEST(HardCaseShock, CardHouseStands)
 	// 10 g cards leaning at 25 degrees: the top card may settle by the cards' bedding in (measured
 	// 1.9 cm), but the house must stand: the top card stays within 5 cm and everything comes to
 	// rest. Stock SI at 10 iterations collapses it (95 cm).
-	SceneRun run("card_house", spec::shock());
+	harness::Trial run(spec::shock(), "card_house");
 	run.run(5.0);
-	EXPECT_LT(run.drift->drift(run.named("top")), 0.05) << "m";
-	EXPECT_LT(harness::maxSpeed(run.bodies), 0.01) << "m/s";
+	EXPECT_LT(run.drift().drift(run.named("top")), 0.05) << "m";
+	EXPECT_LT(harness::maxSpeed(run.bodies()), 0.01) << "m/s";
 }
 
 TEST(HardCaseShock, MassRatioTowerOfRatio1000Stands)
 {
-	SceneRun run("mass_ratio_tower", spec::shock(), {{"ratio", 1000}});
+	harness::Trial run(spec::shock(), "mass_ratio_tower", {{"ratio", 1000}});
 	run.run(5.0);
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
 TEST(HardCaseShock, BfsLayersWithoutSupportOrderingJamTheDoor)
 {
 	// The failure the support ordering exists for (docs/design.md, D12): with plain BFS layers the
 	// right column's top box is clamped between the fixated lintel and the fixated box below it.
-	SceneRun run("door", spec::shock());
-	btShockPropagationSettings settings = run.sim->shockSolver()->getSettings();
+	harness::Trial run(spec::shock(), "door");
+	btShockPropagationSettings settings = run.simulation().shockSolver()->getSettings();
 	settings.m_supportOrdering = false;
-	run.sim->shockSolver()->setSettings(settings);
+	run.simulation().shockSolver()->setSettings(settings);
 	run.run(2.0);
-	EXPECT_GT(run.worstDrift, 0.05) << "m: expected the BFS-only layering to lose the door";
+	EXPECT_GT(run.maxDrift(), 0.05) << "m: expected the BFS-only layering to lose the door";
 }
 
 namespace
@@ -203,13 +206,13 @@ struct PitResult
 
 PitResult dropIntoPit(const harness::SolverSpec& solver)
 {
-	SceneRun run("dense_random", solver, {{"seed", 2}});
+	harness::Trial run(solver, "dense_random", {{"seed", 2}});
 	PitResult r;
 	for (int i = 0; i < 600; ++i)
 	{
-		run.sim->step();
-		r.deepest = std::max(r.deepest, harness::maxPenetration(*run.sim->world().getDispatcher()));
-		if (i >= 300) r.fastestLate = std::max(r.fastestLate, harness::maxSpeed(run.bodies));
+		run.simulation().step();
+		r.deepest = std::max(r.deepest, harness::maxPenetration(*run.simulation().world().getDispatcher()));
+		if (i >= 300) r.fastestLate = std::max(r.fastestLate, harness::maxSpeed(run.bodies()));
 	}
 	return r;
 }

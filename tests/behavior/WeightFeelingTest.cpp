@@ -9,7 +9,6 @@
 #include <cmath>
 #include <string>
 
-using spec::SceneRun;
 
 namespace
 {
@@ -22,7 +21,7 @@ double weightOf(const btRigidBody* body)
 
 /// Runs `seconds`, then averages `measure()` over one more second.
 template <class Measure>
-double averageOverLastSecond(SceneRun& run, double seconds, Measure measure)
+double averageOverLastSecond(harness::Trial& run, double seconds, Measure measure)
 {
 	run.run(seconds);
 	const int steps = int(1.0 / spec::kTimeStepSeconds + 0.5);
@@ -35,9 +34,9 @@ double averageOverLastSecond(SceneRun& run, double seconds, Measure measure)
 	return sum / steps;
 }
 
-double groundOverWeight(SceneRun& run)
+double groundOverWeight(harness::Trial& run)
 {
-	return harness::groundReactionOverWeight(*run.sim->world().getDispatcher(), run.scene->ground(), run.bodies,
+	return harness::groundReactionOverWeight(*run.simulation().world().getDispatcher(), run.scene().ground(), run.bodies(),
 											 spec::kTimeStepSeconds, kGravity);
 }
 
@@ -48,9 +47,9 @@ struct SupportForces
 };
 
 /// Runs 2 s, then averages the vertical forces of `left` and `right` on `upper` over one more second.
-SupportForces averageSupportForces(SceneRun& run, const btRigidBody* upper, const btRigidBody* left, const btRigidBody* right)
+SupportForces averageSupportForces(harness::Trial& run, const btRigidBody* upper, const btRigidBody* left, const btRigidBody* right)
 {
-	btDispatcher& dispatcher = *run.sim->world().getDispatcher();
+	btDispatcher& dispatcher = *run.simulation().world().getDispatcher();
 	SupportForces sum;
 	const double steps = std::round(1.0 / spec::kTimeStepSeconds);
 	averageOverLastSecond(run, 2.0, [&] {
@@ -88,10 +87,10 @@ TEST_P(WeightFeeling, GroundCarriesTheWholeTowerOf10And40)
 {
 	for (int n : {10, 40})
 	{
-		SceneRun run("tower", GetParam().solver, {{"n", n}});
+		harness::Trial run(GetParam().solver, "tower", {{"n", n}});
 		const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
 		EXPECT_NEAR(ground, 1.0, 0.05) << "tower of " << n << ": ground reaction / total weight";
-		EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters) << "tower of " << n;
+		EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters) << "tower of " << n;
 	}
 }
 
@@ -99,20 +98,20 @@ TEST_P(WeightFeeling, LintelOnEqualColumnsPutsHalfItsWeightOnEach)
 {
 	// Column tops 0.1 m wide at +-1.25 m: where on a top the lintel presses moves the split by at
 	// most 4% (wide tops would make it statically indeterminate).
-	SceneRun run("door", GetParam().solver, {{"left", 2}, {"right", 2}, {"size", 0.1}});
+	harness::Trial run(GetParam().solver, "door", {{"left", 2}, {"right", 2}, {"size", 0.1}});
 	const btRigidBody* lintel = run.named("lintel");
 	const SupportForces forces = averageSupportForces(run, lintel, run.named("leftTop"), run.named("rightTop"));
 	const double half = weightOf(lintel) / 2;
 	EXPECT_NEAR(forces.left, half, 0.1 * half) << "N on the left column";
 	EXPECT_NEAR(forces.right, half, 0.1 * half) << "N on the right column";
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
 TEST_P(WeightFeeling, PlankSharesAnOffCentreLoadByTheLeverRule)
 {
-	SceneRun run("loaded_plank", GetParam().solver);
+	harness::Trial run(GetParam().solver, "loaded_plank");
 	const btRigidBody* plank = run.named("plank");
-	const double rightShare = run.scene->facts.at("rightShare");
+	const double rightShare = run.scene().facts.at("rightShare");
 	ASSERT_GT(rightShare, 0.6) << "the scene should load the right support more";
 	const SupportForces forces = averageSupportForces(run, plank, run.named("leftSupport"), run.named("rightSupport"));
 	const double load = weightOf(run.named("load"));
@@ -120,7 +119,7 @@ TEST_P(WeightFeeling, PlankSharesAnOffCentreLoadByTheLeverRule)
 	const double expectedRight = weightOf(plank) / 2 + load * rightShare;
 	EXPECT_NEAR(forces.left, expectedLeft, 0.1 * expectedLeft) << "N on the left support";
 	EXPECT_NEAR(forces.right, expectedRight, 0.1 * expectedRight) << "N on the right support";
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
 TEST_P(WeightFeeling, SeesawTipsToTheHeavySideAndRestsThere)
@@ -128,29 +127,29 @@ TEST_P(WeightFeeling, SeesawTipsToTheHeavySideAndRestsThere)
 	// Two cubes on the heavy end: the default five topple off the tipped plank (their centre of mass
 	// is over the edge at its 14 degrees) and the light cube then tips it back, as physics says; an
 	// edge 0.28 m high tips the plank by 5 degrees only, so two cubes stay on it after it lands.
-	SceneRun run("seesaw", GetParam().solver, {{"stack", 2}, {"fulcrumSize", 0.2}});
+	harness::Trial run(GetParam().solver, "seesaw", {{"stack", 2}, {"fulcrumSize", 0.2}});
 	const btRigidBody* plank = run.named("plank");
 	run.run(6.0);
 	const double rise = plank->getWorldTransform().getBasis().getColumn(0).y();  // > 0: +x end up
 	EXPECT_GT(rise, std::sin(0.05)) << "the heavy (-x) end should be down (it rests at 5.4 degrees)";
-	EXPECT_LT(harness::kineticEnergy(run.bodies), 1e-3) << "J: the seesaw should have come to rest";
+	EXPECT_LT(harness::kineticEnergy(run.bodies()), 1e-3) << "J: the seesaw should have come to rest";
 }
 
 // The door's standing without an energy spike is HardCase.DoorWithUnequalColumnsStandsWithoutJamming,
 // which runs with weight feeling too; here, its weight reaches the ground.
 TEST_P(WeightFeeling, DoorWithUnequalColumnsPassesItsWeightToTheGround)
 {
-	SceneRun run("door", GetParam().solver);
+	harness::Trial run(GetParam().solver, "door");
 	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
 	EXPECT_NEAR(ground, 1.0, 0.05);
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
 TEST_P(WeightFeeling, MassRatio1000TowerStandsAndWeighsRight)
 {
-	SceneRun run("mass_ratio_tower", GetParam().solver);
+	harness::Trial run(GetParam().solver, "mass_ratio_tower");
 	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
-	EXPECT_LT(run.worstDrift, spec::kMaxDriftMeters);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 	EXPECT_NEAR(ground, 1.0, 0.05);
 }
 
@@ -162,7 +161,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, WeightFeeling,
 // Without the mode the same statics fail: the tests above can fail (measured 0.24 of the weight).
 TEST(WithoutWeightFeeling, GroundCarriesOnlyPartOfTheTower)
 {
-	SceneRun run("tower", spec::shock(10, 0.0), {{"n", 10}});
+	harness::Trial run(spec::shock(10, 0.0), "tower", {{"n", 10}});
 	const double ground = averageOverLastSecond(run, 2.0, [&] { return groundOverWeight(run); });
 	EXPECT_LT(ground, 0.5) << "f = 0 fixation withholds the weight of the boxes above";
 }

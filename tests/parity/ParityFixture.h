@@ -6,8 +6,11 @@
 //   Solver - btDiscreteDynamicsWorld + new btShockPropagationConstraintSolver() (solver-only drop-in)
 // exactly as an application writes it: Bullet's defaults everywhere (btContactSolverInfo, 10
 // iterations) and the plugin's default settings, so an app's own settings reach the plugin the
-// way they reach stock Bullet. (harness::Simulation pins the plugin's sweep counts through
-// btShockPropagationSettings and wraps each solver in a recorder, so it cannot show that.)
+// way they reach stock Bullet. That is why these specs do not use harness::Trial: the harness
+// wraps every solver in a contact recorder, times collision detection in a world subclass and
+// hands the plugin's solver its settings, and its scenes come from the registry; here the world
+// creates its own solver (nullptr), nothing is wrapped, and each case builds the small scene its
+// Bullet feature needs. They share the harness's meaning of "standing" (harness/Standing.h).
 //
 // Expected values come from stock Bullet in the same test or from physics (statics), never from
 // the plugin's own output. Each test prints one line

@@ -31,7 +31,7 @@
 //
 // Count and finiteness must hold for every seed. The budget or the cap is exceeded today in
 // about 1% of seeds (1,000 seeds, float: 11 in the world mode, 9 solver-only; before the one-setup
-// step 14 and 16; README, "Behaviour on bad input"). Stock Bullet
+// step 14 and 16; docs/design.md, section 12, "Behaviour on bad input"). Stock Bullet
 // exceeds the same bounds in 0.9% of the same worlds without poison (it spreads NaN when
 // poisoned), and the last test checks that the plugin does not do so much more often. The test
 // fails if more than kMaxSeedsOverBoundPercent of the seeds exceed them, and prints the ones that do.
@@ -64,7 +64,7 @@ constexpr double kGravity = 9.81;  // m/s^2, harness::Simulation's default
 constexpr int kStepsPerSeed = 120;
 constexpr int kDefaultSeeds = 100;
 constexpr int kMaxReportedFailures = 20;
-constexpr double kMaxSeedsOverBoundPercent = 2;  // measured 1.1 (world) and 0.9 (solver-only) over 1,000 seeds (README)
+constexpr double kMaxSeedsOverBoundPercent = 2;  // measured 1.1 (world) and 0.9 (solver-only) over 1,000 seeds (docs/design.md, section 12)
 
 int seedCount()
 {
@@ -185,7 +185,9 @@ int runSeeds(const harness::SolverSpec& solver, const scenes::HostileParams& par
 	for (size_t i = 0; i < broken.size() && i < size_t(kMaxReportedFailures); ++i) ADD_FAILURE() << broken[i];
 	EXPECT_EQ(broken.size(), 0u) << broken.size() << " of " << seeds << " seeds lost count or finiteness";
 	if (boundPercent >= 0)
+	{
 		EXPECT_LE(100.0 * double(overBound.size()) / seeds, boundPercent) << overBound.size() << " of " << seeds << " seeds exceeded the bounds";
+	}
 	return int(overBound.size());
 }
 

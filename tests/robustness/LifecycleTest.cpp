@@ -16,7 +16,7 @@
 
 namespace
 {
-using spec::kMaxDriftMeters;
+using harness::kStandingDriftMeters;
 using spec::kTimeStepSeconds;
 using spec::plugin;
 constexpr double kBoxHeightMeters = 0.5;  // the registry's standard box (1 x 0.5 x 1 m)
@@ -50,22 +50,22 @@ std::string kindName(const ::testing::TestParamInfo<harness::SolverKind>& info)
 
 void removeMiddleBoxFromTickCallback(harness::SolverKind kind, bool preTick)
 {
-	spec::SceneRun run("tower", plugin(kind), {{"n", 5}});
+	harness::Trial run(plugin(kind), "tower", {{"n", 5}});
 	TickAction action;
 	action.stepsLeft = 30;  // 0.5 s of standing first
-	action.bodyToRemove = run.bodies[2];
-	run.sim->world().setInternalTickCallback(actOnTick, &action, preTick);
+	action.bodyToRemove = run.bodies()[2];
+	run.simulation().world().setInternalTickCallback(actOnTick, &action, preTick);
 	run.run(2.5);
 	ASSERT_TRUE(action.done);
-	EXPECT_EQ(run.sim->world().getNumCollisionObjects(), int(run.scene->bodies().size()) - 1);
-	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
+	EXPECT_EQ(run.simulation().world().getNumCollisionObjects(), int(run.scene().bodies().size()) - 1);
+	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
 	// The two boxes above the gap fall by about one box height; the two below do not move.
-	EXPECT_GT(run.drift->drift(run.bodies[3]), 0.8 * kBoxHeightMeters);
-	EXPECT_GT(run.drift->drift(run.bodies[4]), 0.8 * kBoxHeightMeters);
-	EXPECT_LT(run.drift->drift(run.bodies[0]), kMaxDriftMeters);
-	EXPECT_LT(run.drift->drift(run.bodies[1]), kMaxDriftMeters);
-	run.sim->world().setInternalTickCallback(nullptr);
-	run.sim->world().addRigidBody(action.bodyToRemove);  // back, so the scene removes it as usual
+	EXPECT_GT(run.drift().drift(run.bodies()[3]), 0.8 * kBoxHeightMeters);
+	EXPECT_GT(run.drift().drift(run.bodies()[4]), 0.8 * kBoxHeightMeters);
+	EXPECT_LT(run.drift().drift(run.bodies()[0]), kStandingDriftMeters);
+	EXPECT_LT(run.drift().drift(run.bodies()[1]), kStandingDriftMeters);
+	run.simulation().world().setInternalTickCallback(nullptr);
+	run.simulation().world().addRigidBody(action.bodyToRemove);  // back, so the scene removes it as usual
 }
 }  // namespace
 
@@ -77,58 +77,58 @@ TEST_P(Lifecycle, JointRemovedInTickCallbacksDropsTheBoxItHeld)
 {
 	for (bool preTick : {true, false})
 	{
-		spec::SceneRun run("single_box", plugin(GetParam()), {});
-		btRigidBody* ground = run.scene->ground();
+		harness::Trial run(plugin(GetParam()), "single_box", {});
+		btRigidBody* ground = run.scene().ground();
 		// A second box hung 3 m up from the static ground by a point-to-point joint 0.5 m above it.
-		btCollisionShape* shape = run.scene->addShape(new btBoxShape(btVector3(btScalar(0.25), btScalar(0.25), btScalar(0.25))));
-		btRigidBody* hung = run.scene->addBody(shape, 1, btTransform(btQuaternion::getIdentity(), btVector3(5, 3, 0)), 0.6f);
-		btTypedConstraint* joint = run.scene->addConstraint(
+		btCollisionShape* shape = run.scene().addShape(new btBoxShape(btVector3(btScalar(0.25), btScalar(0.25), btScalar(0.25))));
+		btRigidBody* hung = run.scene().addBody(shape, 1, btTransform(btQuaternion::getIdentity(), btVector3(5, 3, 0)), 0.6f);
+		btTypedConstraint* joint = run.scene().addConstraint(
 			new btPoint2PointConstraint(*hung, *ground, btVector3(0, btScalar(0.5), 0), btVector3(5, btScalar(3.5) + btScalar(0.5), 0)));
 		TickAction action;
 		action.stepsLeft = 60;
 		action.constraintToRemove = joint;
-		run.sim->world().setInternalTickCallback(actOnTick, &action, preTick);
+		run.simulation().world().setInternalTickCallback(actOnTick, &action, preTick);
 		run.run(0.9);
 		EXPECT_NEAR(hung->getCenterOfMassPosition().y(), 3.0, 0.05) << "the joint holds until it is removed";
 		run.run(1.6);
 		ASSERT_TRUE(action.done);
-		EXPECT_EQ(run.sim->world().getNumConstraints(), 0);
+		EXPECT_EQ(run.simulation().world().getNumConstraints(), 0);
 		// Fell 3 m onto the ground: rests with its centre at its half height, 0.25 m.
 		EXPECT_NEAR(hung->getCenterOfMassPosition().y(), 0.25, 0.02);
 		EXPECT_FALSE(harness::anyNonFinite({hung}));
-		run.sim->world().setInternalTickCallback(nullptr);
-		run.sim->world().addConstraint(joint);  // back, so the scene removes it as usual
+		run.simulation().world().setInternalTickCallback(nullptr);
+		run.simulation().world().addConstraint(joint);  // back, so the scene removes it as usual
 	}
 }
 
 TEST_P(Lifecycle, SwitchingSolversEverySecondKeepsTheTowerStanding)
 {
 	// Two plugin solvers with different weightings take turns; warm-start caches carry over.
-	spec::SceneRun run("tower", plugin(GetParam()), {{"n", 10}});
+	harness::Trial run(plugin(GetParam()), "tower", {{"n", 10}});
 	btShockPropagationConstraintSolver first, second;
 	first.setWeighting(btScalar(0.1));
 	second.setWeighting(btScalar(0.25));
 	for (int second_ = 0; second_ < 10; ++second_)
 	{
-		run.sim->world().setConstraintSolver(second_ % 2 ? &second : &first);
+		run.simulation().world().setConstraintSolver(second_ % 2 ? &second : &first);
 		run.run(1.0);
 	}
-	EXPECT_LT(run.drift->maxDrift(), kMaxDriftMeters);
-	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
-	run.sim->world().setConstraintSolver(run.sim->shockSolver());  // the harness deletes its own solver
+	EXPECT_LT(run.drift().maxDrift(), kStandingDriftMeters);
+	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
+	run.simulation().world().setConstraintSolver(run.simulation().shockSolver());  // the harness deletes its own solver
 }
 
 TEST_P(Lifecycle, ChangingTheWeightingEveryStepKeepsTheTowerStanding)
 {
-	spec::SceneRun run("tower", plugin(GetParam()), {{"n", 10}});
+	harness::Trial run(plugin(GetParam()), "tower", {{"n", 10}});
 	const btScalar weightings[] = {btScalar(0.1), btScalar(0), btScalar(0.25), btScalar(0.5)};
 	for (int step = 0; step < 600; ++step)
 	{
-		run.sim->shockSolver()->setWeighting(weightings[step % 4]);
-		run.sim->step();
+		run.simulation().shockSolver()->setWeighting(weightings[step % 4]);
+		run.simulation().step();
 	}
-	EXPECT_LT(run.drift->maxDrift(), kMaxDriftMeters);
-	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
+	EXPECT_LT(run.drift().maxDrift(), kStandingDriftMeters);
+	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
 }
 
 TEST_P(Lifecycle, WorldWithOnlyStaticBodiesLeavesThemExactlyInPlace)
@@ -155,15 +155,15 @@ TEST_P(Lifecycle, WorldWithOnlyStaticBodiesLeavesThemExactlyInPlace)
 
 TEST_P(Lifecycle, BodyWithDisableSimulationStaysPutWhileTheTowerBesideItStands)
 {
-	spec::SceneRun run("tower", plugin(GetParam()), {{"n", 5}});
-	btCollisionShape* shape = run.scene->addShape(new btBoxShape(btVector3(btScalar(0.25), btScalar(0.25), btScalar(0.25))));
+	harness::Trial run(plugin(GetParam()), "tower", {{"n", 5}});
+	btCollisionShape* shape = run.scene().addShape(new btBoxShape(btVector3(btScalar(0.25), btScalar(0.25), btScalar(0.25))));
 	const btVector3 where(4, 3, 0);  // in mid-air: would fall 2.75 m if simulated
-	btRigidBody* frozen = run.scene->addBody(shape, 1, btTransform(btQuaternion::getIdentity(), where), 0.6f);
+	btRigidBody* frozen = run.scene().addBody(shape, 1, btTransform(btQuaternion::getIdentity(), where), 0.6f);
 	frozen->forceActivationState(DISABLE_SIMULATION);
 	run.run(2.0);
 	EXPECT_EQ(frozen->getWorldTransform().getOrigin(), where);
-	EXPECT_LT(run.drift->maxDrift(), kMaxDriftMeters);
-	EXPECT_FALSE(harness::anyNonFinite(run.bodies));
+	EXPECT_LT(run.drift().maxDrift(), kStandingDriftMeters);
+	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Robustness, Lifecycle, ::testing::Values(harness::SolverKind::ShockWorld, harness::SolverKind::ShockSolverOnly),
@@ -198,7 +198,7 @@ TEST(LifecycleDestruction, ShockWorldDestroyedBeforeItsSolver)
 	std::unique_ptr<btShockPropagationConstraintSolver> solver(new btShockPropagationConstraintSolver);
 	std::unique_ptr<btShockPropagationDynamicsWorld> world(
 		new btShockPropagationDynamicsWorld(&rig.dispatcher, &rig.broadphase, solver.get(), &rig.configuration));
-	EXPECT_LT(standTowerOfThree(*world), kMaxDriftMeters);
+	EXPECT_LT(standTowerOfThree(*world), kStandingDriftMeters);
 	world.reset();
 	EXPECT_EQ(solver->getSettings().m_weighting, btShockPropagationSettings().m_weighting);  // still alive and intact
 }
@@ -209,7 +209,7 @@ TEST(LifecycleDestruction, SolverDestroyedBeforeTheShockWorld)
 	std::unique_ptr<btShockPropagationConstraintSolver> solver(new btShockPropagationConstraintSolver);
 	std::unique_ptr<btShockPropagationDynamicsWorld> world(
 		new btShockPropagationDynamicsWorld(&rig.dispatcher, &rig.broadphase, solver.get(), &rig.configuration));
-	EXPECT_LT(standTowerOfThree(*world), kMaxDriftMeters);
+	EXPECT_LT(standTowerOfThree(*world), kStandingDriftMeters);
 	solver.reset();
 	world.reset();  // must not touch the deleted solver
 }
@@ -219,7 +219,7 @@ TEST(LifecycleDestruction, SolverDestroyedBeforeTheStockWorldItWasGivenTo)
 	Rig rig;
 	std::unique_ptr<btShockPropagationConstraintSolver> solver(new btShockPropagationConstraintSolver);
 	std::unique_ptr<btDiscreteDynamicsWorld> world(new btDiscreteDynamicsWorld(&rig.dispatcher, &rig.broadphase, solver.get(), &rig.configuration));
-	EXPECT_LT(standTowerOfThree(*world), kMaxDriftMeters);
+	EXPECT_LT(standTowerOfThree(*world), kStandingDriftMeters);
 	solver.reset();
 	world.reset();
 }
@@ -232,10 +232,10 @@ TEST(LifecycleDestruction, WorldThatOwnsItsSolverFreesItWhenGivenAnother)
 	btShockPropagationConstraintSolver replacement;
 	{
 		btShockPropagationDynamicsWorld world(&rig.dispatcher, &rig.broadphase, nullptr, &rig.configuration);
-		EXPECT_LT(standTowerOfThree(world), kMaxDriftMeters);  // the owned solver has grown its buffers
+		EXPECT_LT(standTowerOfThree(world), kStandingDriftMeters);  // the owned solver has grown its buffers
 		world.setConstraintSolver(&replacement);
 		EXPECT_EQ(world.getShockPropagationSolver(), &replacement);
-		EXPECT_LT(standTowerOfThree(world), kMaxDriftMeters);
+		EXPECT_LT(standTowerOfThree(world), kStandingDriftMeters);
 	}
 	EXPECT_EQ(replacement.getSettings().m_weighting, btShockPropagationSettings().m_weighting);  // not deleted by the world
 }

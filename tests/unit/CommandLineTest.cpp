@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -60,4 +61,45 @@ TEST(CommandLine, SceneParametersAreNameEqualsNumber)
 	EXPECT_EQ(refusal([] { harness::parseSceneParam("bricks"); }), "--param wants NAME=VALUE, got 'bricks'");
 	EXPECT_EQ(refusal([] { harness::parseSceneParam("=3"); }), "--param wants NAME=VALUE, got '=3'");
 	EXPECT_EQ(refusal([] { harness::parseSceneParam("n=ten"); }), "not a number: 'ten'");
+}
+
+namespace
+{
+/// PluginFlags fed `args` as a program's argv (after the program name); every argument must be a plugin flag.
+harness::PluginFlags pluginFlags(std::vector<std::string> args)
+{
+	args.insert(args.begin(), "program");
+	std::vector<char*> argv;
+	for (std::string& a : args) argv.push_back(&a[0]);
+	harness::PluginFlags flags;
+	for (int i = 1; i < int(argv.size()); ++i)
+		if (!flags.parse(int(argv.size()), argv.data(), i)) throw std::invalid_argument("not a plugin flag: " + args[size_t(i)]);
+	return flags;
+}
+}  // namespace
+
+TEST(CommandLine, PluginFlagsSetSettingsAndExpandEveryCombination)
+{
+	const std::vector<btShockPropagationSettings> all =
+		pluginFlags({"--f", "0,0.25", "--fixation", "keep", "--slop", "0,0.001,0.002", "--bfs-layers"}).expand();
+	ASSERT_EQ(all.size(), 6u);
+	EXPECT_EQ(all[0].m_weighting, btScalar(0));
+	EXPECT_EQ(all[5].m_weighting, btScalar(0.25));
+	EXPECT_EQ(all[5].m_correctionSlop, btScalar(0.002));
+	for (const btShockPropagationSettings& s : all)
+	{
+		EXPECT_EQ(s.m_fixationMode, BT_FIXATION_KEEP_VELOCITY);
+		EXPECT_FALSE(s.m_supportOrdering);
+	}
+	EXPECT_EQ(harness::pluginSettingsLabel(all[1]), " f=0 fix=keep slop=0.001 bfs");
+	EXPECT_EQ(harness::pluginSettingsLabel(btShockPropagationSettings()), " f=0.5") << "defaults: f only";
+	EXPECT_EQ(pluginFlags({}).expand().size(), 1u) << "no flag: the base settings alone";
+}
+
+TEST(CommandLine, PluginFlagsRefuseBadValues)
+{
+	EXPECT_NE(refusal([] { pluginFlags({"--f", "1.5"}); }).find("'1.5'"), std::string::npos);
+	EXPECT_NE(refusal([] { pluginFlags({"--fixation", "tilt"}); }).find("'tilt'"), std::string::npos);
+	EXPECT_NE(refusal([] { pluginFlags({"--weight-sweeps", "2.5"}); }).find("'2.5'"), std::string::npos);
+	EXPECT_NE(refusal([] { pluginFlags({"--slop"}); }).find("missing value"), std::string::npos);
 }

@@ -91,7 +91,7 @@ TEST(ContactReference, BoxAtRestCarriesItsWeightImpulse)
 	const btCollisionObject* box = run.scene->dynamicBodies()[0];
 	EXPECT_NEAR(normalSumBetween(p, ref.impulse, box, groundOf(p)), kWeightImpulse, 1e-6 * kWeightImpulse);
 	for (size_t i = 0; i < p.rows.size(); ++i)
-		if (p.rows[i].kind == harness::ContactProblem::kNormal) EXPECT_GE(ref.impulse[i], 0.0) << "row " << i;
+		if (p.rows[i].kind == harness::ContactProblem::kNormal) { EXPECT_GE(ref.impulse[i], 0.0) << "row " << i; }
 	// Friction at single points is indeterminate (pairs may pull against each other); their sum is not.
 	EXPECT_LT(frictionOn(p, ref.impulse, box).length(), 1e-6 * kWeightImpulse);
 }
@@ -159,7 +159,7 @@ TEST(ContactReference, RecordsTheStockSolverImpulsesOnTheReferenceRows)
 
 TEST(ContactReference, PluginImpulsesMissTheWeightOfTheStack)
 {
-	// Weight feeling (README): a fixated body takes no load from above in the layer pass, so the
+	// Weight feeling (docs/design.md, D13): a fixated body takes no load from above in the layer pass, so the
 	// plugin's step impulses under the bottom box carry less than the stack, and the distance to
 	// the reference is large, though every body stays at rest.
 	Captured run("tower", {{"n", 10}, {"mass", kMassKg}}, harness::SolverKind::ShockWorld, 10);

@@ -69,7 +69,7 @@ TEST(StackLayers, ChainHeightEqualsDistanceFromGround)
 		EXPECT_EQ(g.layers.getHeight(i), i + 1);
 		EXPECT_EQ(g.layers.getEdgeLayer(i), i) << "edge below body " << i;
 		EXPECT_EQ(g.freeBodies(i), std::set<int>({i}));
-		if (i > 0) EXPECT_EQ(g.fixatedBodies(i), std::set<int>({i - 1}));
+		if (i > 0) { EXPECT_EQ(g.fixatedBodies(i), std::set<int>({i - 1})); }
 	}
 	EXPECT_EQ(g.layers.getTotalFixated(), n - 1);  // the top body supports nothing
 }
@@ -108,7 +108,9 @@ TEST(StackLayers, PyramidLayerEqualsRowIndex)
 	{
 		const btContactGraphEdge& edge = g.graph.getEdge(i);
 		if (edge.m_bodyA != R && g.layers.getHeight(edge.m_bodyA) == g.layers.getHeight(edge.m_bodyB))
+		{
 			EXPECT_EQ(g.layers.getEdgeLayer(i), g.layers.getHeight(edge.m_bodyA) - 1);
+		}
 	}
 }
 
@@ -230,7 +232,9 @@ TEST(StackLayers, SupportOrderingPutsTheDoorLintelAboveBothColumns)
 	for (int k = 0; k < g.layers.getNumLayers(); ++k)
 		for (int e = 0; e < g.graph.getNumEdges(); ++e)
 			if (g.layers.getEdgeLayer(e) == k && kDoorEdges[e].second >= 0)
+			{
 				EXPECT_EQ(g.fixatedBodies(k).count(kDoorEdges[e].first), 0u) << "layer " << k << " edge " << e;
+			}
 }
 
 TEST(StackLayers, SideContactsDoNotRaiseHeights)

@@ -1,9 +1,16 @@
 #include "harness/CommandLine.h"
 
+#include <scenes/Registry.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace harness
 {
@@ -55,5 +62,165 @@ std::pair<std::string, double> parseSceneParam(const std::string& text)
 	const auto eq = text.find('=');
 	if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param wants NAME=VALUE, got '" + text + "'");
 	return {text.substr(0, eq), parseNumber(text.substr(eq + 1))};
+}
+
+namespace
+{
+/// One plugin setting on the command line. `set` applies one value (text; "" for a switch) and
+/// throws std::invalid_argument on a bad one; `show` gives the label text for the setting's value.
+struct PluginFlag
+{
+	const char* flag;
+	const char* value;  ///< value placeholder in the help, nullptr for a switch
+	const char* help;
+	bool alwaysInLabel;  ///< shown in labels even at the default (f)
+	std::function<void(btShockPropagationSettings&, const std::string&)> set;
+	std::function<std::string(const btShockPropagationSettings&)> show;
+};
+
+/// A switch that sets a bool field to `value`; labelled `label` when it does.
+PluginFlag switchFlag(const char* flag, const char* help, bool btShockPropagationSettings::*field, bool value, const char* label)
+{
+	return {flag, nullptr, help, false, [=](btShockPropagationSettings& s, const std::string&) { s.*field = value; },
+			[=](const btShockPropagationSettings& s) { return std::string(s.*field == value ? label : ""); }};
+}
+
+/// A numeric field (whole numbers for an int field) whose values pass `valid` (described by
+/// `range`); labelled "key=value".
+template <class T>
+PluginFlag numberFlag(const char* flag, const char* value, const char* help, T btShockPropagationSettings::*field, const char* key,
+					  bool (*valid)(double), const char* range, bool alwaysInLabel = false)
+{
+	const std::string name = flag;
+	return {flag, value, help, alwaysInLabel,
+			[=](btShockPropagationSettings& s, const std::string& text) {
+				const double v = std::is_integral<T>::value ? double(parseInteger(text)) : parseNumber(text);
+				if (!valid(v)) throw std::invalid_argument(name + " values must be " + range + ", got '" + text + "'");
+				s.*field = T(v);
+			},
+			[=](const btShockPropagationSettings& s) {
+				std::ostringstream out;
+				out << key << "=" << s.*field;
+				return out.str();
+			}};
+}
+
+const char* const kFixationNames[] = {"keep", "zero", "linear", "twist"};  // by btShockPropagationFixationMode
+
+/// The table: a plugin setting's flag is one entry here.
+const std::vector<PluginFlag>& pluginFlags()
+{
+	static const std::vector<PluginFlag> table = {
+		numberFlag("--f", "F,G,...", "plugin weighting values f in [0,1] (default 0.5; D2)", &btShockPropagationSettings::m_weighting, "f",
+				   [](double f) { return f >= 0 && f <= 1; }, "in [0, 1]", true),
+		{"--fixation", "MODE,...", "plugin fixation: twist (default), linear, keep, zero (D1)", false,
+		 [](btShockPropagationSettings& s, const std::string& text) {
+			 for (int m = 0; m < 4; ++m)
+				 if (text == kFixationNames[m])
+				 {
+					 s.m_fixationMode = btShockPropagationFixationMode(m);
+					 return;
+				 }
+			 throw std::invalid_argument("unknown fixation mode '" + text + "'; valid: twist, linear, keep, zero");
+		 },
+		 [](const btShockPropagationSettings& s) { return std::string("fix=") + kFixationNames[s.m_fixationMode]; }},
+		switchFlag("--global-correction", "plugin: the paper's un-layered second correction (D4)",
+				   &btShockPropagationSettings::m_layeredSecondCorrection, false, "globalcorr"),
+		numberFlag("--slop", "M,N,...", "plugin: correction slop values in metres (default: 0.18 g dt^2; D6)",
+				   &btShockPropagationSettings::m_correctionSlop, "slop", [](double m) { return m >= 0 || m == -1; }, ">= 0 metres"),
+		switchFlag("--bfs-layers", "plugin: plain BFS layers, no support ordering (D12 off)", &btShockPropagationSettings::m_supportOrdering,
+				   false, "bfs"),
+		numberFlag("--weight-sweeps", "N,...", "plugin with weight feeling (sp-wf): sweeps per loaded layer (default 40; D13)",
+				   &btShockPropagationSettings::m_weightIterations, "sweeps", [](double n) { return n >= 1; }, ">= 1"),
+	};
+	return table;
+}
+}  // namespace
+
+bool PluginFlags::parse(int argc, char** argv, int& i)
+{
+	const std::string a = argv[i];
+	const std::vector<PluginFlag>& flags = pluginFlags();
+	for (int k = 0; k < int(flags.size()); ++k)
+	{
+		const PluginFlag& f = flags[k];
+		if (a != f.flag) continue;
+		Given given{k, {""}};
+		if (f.value)
+		{
+			if (i + 1 >= argc) throw std::invalid_argument("missing value after " + a);
+			given.values = splitList(argv[++i], a.substr(2));
+			btShockPropagationSettings probe;
+			for (const std::string& v : given.values) f.set(probe, v);  // reject bad values now
+		}
+		const auto same = std::find_if(m_given.begin(), m_given.end(), [k](const Given& g) { return g.flag == k; });
+		if (same != m_given.end())
+			*same = given;  // the last one given counts
+		else
+			m_given.push_back(given);
+		return true;
+	}
+	return false;
+}
+
+std::vector<btShockPropagationSettings> PluginFlags::expand(const btShockPropagationSettings& base) const
+{
+	std::vector<btShockPropagationSettings> out{base};
+	for (const Given& g : m_given)
+	{
+		std::vector<btShockPropagationSettings> next;
+		for (const btShockPropagationSettings& s : out)
+			for (const std::string& v : g.values)
+			{
+				next.push_back(s);
+				pluginFlags()[g.flag].set(next.back(), v);
+			}
+		out.swap(next);
+	}
+	return out;
+}
+
+void PluginFlags::printUsage(std::ostream& out)
+{
+	for (const PluginFlag& f : pluginFlags())
+	{
+		std::string head = std::string("  ") + f.flag + (f.value ? std::string(" ") + f.value : std::string());
+		head.resize(std::max<size_t>(head.size() + 1, 24), ' ');
+		out << head << f.help << "\n";
+	}
+}
+
+std::string optionValue(int argc, char** argv, int& i)
+{
+	if (i + 1 >= argc) throw std::invalid_argument(std::string("missing value after ") + argv[i]);
+	return argv[++i];
+}
+
+bool parseSharedOption(int argc, char** argv, int& i, PluginFlags& plugin, void (*usage)())
+{
+	const std::string a = argv[i];
+	if (a == "--help" || a == "-h")
+	{
+		usage();
+		std::exit(0);
+	}
+	if (a == "--list")
+	{
+		scenes::printRegistry(std::cout);
+		std::exit(0);
+	}
+	return plugin.parse(argc, argv, i);
+}
+
+std::string pluginSettingsLabel(const btShockPropagationSettings& settings)
+{
+	const btShockPropagationSettings defaults;
+	std::string out;
+	for (const PluginFlag& f : pluginFlags())
+	{
+		const std::string text = f.show(settings);
+		if (!text.empty() && (f.alwaysInLabel || text != f.show(defaults))) out += " " + text;
+	}
+	return out;
 }
 }  // namespace harness

@@ -1,5 +1,6 @@
 #include "harness/Simulation.h"
 
+#include "harness/CommandLine.h"
 #include "harness/ContactRecorder.h"
 
 #include <BulletDynamics/ConstraintSolver/btNNCGConstraintSolver.h>
@@ -94,7 +95,7 @@ bool parseSolverKind(const std::string& text, SolverSpec& spec, std::string& err
 		if (base == k.name)
 		{
 			spec.kind = k.kind;
-			spec.weightFeeling = k.weightFeeling;
+			spec.settings.m_weightFeeling = k.weightFeeling;
 			spec.substeps = substeps;
 			return true;
 		}
@@ -107,7 +108,7 @@ std::string SolverSpec::name() const
 {
 	std::ostringstream out;
 	for (const KindName& k : kKinds)
-		if (k.kind == kind && k.weightFeeling == weightFeeling) out << k.name;
+		if (k.kind == kind && k.weightFeeling == settings.m_weightFeeling) out << k.name;
 	if (substeps > 1) out << "-sub" << substeps;
 	return out.str();
 }
@@ -116,16 +117,7 @@ std::string SolverSpec::label() const
 {
 	std::ostringstream out;
 	out << name() << " it=" << iterations;
-	if (kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly)
-	{
-		out << " f=" << weighting;
-		const char* modes[] = {"keep", "zero", "linear", "twist"};
-		if (fixationMode >= 0 && fixationMode < 4) out << " fix=" << modes[fixationMode];
-		if (globalSecondCorrection) out << " globalcorr";
-		if (correctionSlop >= 0) out << " slop=" << correctionSlop;
-		if (!supportOrdering) out << " bfs";
-		if (weightFeeling && weightIterations > 0) out << " sweeps=" << weightIterations;
-	}
+	if (isPlugin()) out << pluginSettingsLabel(settings);
 	return out.str();
 }
 
@@ -136,19 +128,10 @@ Simulation::Simulation(const SolverSpec& spec, double timeStep, double gravity)
 	m_dispatcher.reset(new btCollisionDispatcher(m_configuration.get()));
 	m_broadphase.reset(new btDbvtBroadphase());
 
-	const bool shock = spec.kind == SolverKind::ShockWorld || spec.kind == SolverKind::ShockSolverOnly;
-	if (shock)
+	if (spec.isPlugin())
 	{
-		btShockPropagationSettings settings;
-		settings.m_weighting = btScalar(spec.weighting);
 		// Sweep counts follow the world's m_numIterations (set below), as in an app.
-		if (spec.fixationMode >= 0) settings.m_fixationMode = btShockPropagationFixationMode(spec.fixationMode);
-		settings.m_layeredSecondCorrection = !spec.globalSecondCorrection;
-		if (spec.correctionSlop >= 0) settings.m_correctionSlop = btScalar(spec.correctionSlop);
-		settings.m_supportOrdering = spec.supportOrdering;
-		settings.m_weightFeeling = spec.weightFeeling;
-		if (spec.weightIterations > 0) settings.m_weightIterations = spec.weightIterations;
-		m_shockSolver = recording<btShockPropagationConstraintSolver>(&m_recorder, settings);
+		m_shockSolver = recording<btShockPropagationConstraintSolver>(&m_recorder, spec.settings);
 		m_solver.reset(m_shockSolver);
 	}
 	else if (spec.kind == SolverKind::NNCG)

@@ -31,6 +31,7 @@ void Trial::step()
 	btDispatcher& dispatcher = *m_sim->world().getDispatcher();
 	const double drift = m_drift->maxDrift();
 	m_series.drift.push_back(drift);
+	m_maxDrift = std::max(m_maxDrift, drift);
 	m_series.penetration.push_back(maxPenetration(dispatcher));
 	m_series.kineticEnergy.push_back(kineticEnergy(m_bodies));
 	m_series.groundOverWeight.push_back(
@@ -39,6 +40,12 @@ void Trial::step()
 	if (m_collapseTime < 0 && drift > kStandingDriftMeters) m_collapseTime = m_sim->time();
 	m_nonFinite = m_nonFinite || anyNonFinite(m_bodies);
 	if (m_sim->shockSolver()) m_layers = std::max(m_layers, m_sim->shockSolver()->getStatistics().m_numLayers);
+}
+
+void Trial::run(double seconds)
+{
+	const int frames = int(seconds / m_sim->timeStep() + 0.5);
+	for (int i = 0; i < frames; ++i) step();
 }
 
 TrialSummary Trial::summary() const
@@ -51,7 +58,7 @@ TrialSummary Trial::summary() const
 	s.rmsDrift = m_drift->rmsDrift();
 	s.layers = m_layers;
 	if (n == 0) return s;
-	s.maxDrift = *std::max_element(m_series.drift.begin(), m_series.drift.end());
+	s.maxDrift = m_maxDrift;
 	s.maxPenetration = *std::max_element(m_series.penetration.begin(), m_series.penetration.end());
 	const int window = std::min(n, std::max(1, int(1.0 / m_sim->timeStep() + 0.5)));
 	for (int k = n - window; k < n; ++k)

@@ -47,11 +47,6 @@ std::string kindName(harness::SolverKind kind)
 	return s.name();
 }
 
-bool isShock(const harness::SolverSpec& s)
-{
-	return s.kind == harness::SolverKind::ShockWorld || s.kind == harness::SolverKind::ShockSolverOnly;
-}
-
 /// Everything the window shows and edits.
 class App
 {
@@ -59,7 +54,7 @@ public:
 	App(GLFWwindow* window, const ComparisonSetup& setup, const DrawOptions& draw, const OrbitCamera& camera)
 		: m_window(window), m_setup(setup), m_draw(draw), m_comparison(new Comparison(setup)), m_camera(camera)
 	{
-		m_weighting = float(setup.solvers.front().weighting);
+		m_weighting = float(setup.solvers.front().settings.m_weighting);
 		m_frameCamera = true;
 	}
 
@@ -111,7 +106,7 @@ void App::rebuild()
 {
 	try
 	{
-		for (harness::SolverSpec& s : m_setup.solvers) s.weighting = m_weighting;
+		for (harness::SolverSpec& s : m_setup.solvers) s.settings.m_weighting = btScalar(m_weighting);
 		m_comparison.reset(new Comparison(m_setup));
 		m_error.clear();
 	}
@@ -367,10 +362,10 @@ void App::frame()
 	{
 		harness::Trial& trial = m_comparison->trial(i);
 		std::vector<std::string> lines{solverTitle(trial.simulation().spec())};
-		if (isShock(trial.simulation().spec()))
+		if (trial.simulation().spec().isPlugin())
 		{
 			char f[32];
-			std::snprintf(f, sizeof(f), "f = %.3g", trial.simulation().spec().weighting);
+			std::snprintf(f, sizeof(f), "f = %.3g", double(trial.simulation().spec().settings.m_weighting));
 			lines.push_back(f);
 		}
 		for (const std::string& l : metricLines(trial)) lines.push_back(l);

@@ -27,7 +27,7 @@ struct Options
 	viewer::ComparisonSetup setup;
 	std::vector<std::string> solvers{"si", "si", "sp"};
 	std::vector<int> iterations;  // empty: 10,100,10 for the default solvers, else 10
-	double weighting = btShockPropagationSettings().m_weighting;
+	harness::PluginFlags plugin;  // --f, --fixation, ...: one value each, for every plugin viewport
 	viewer::DrawOptions draw;
 	bool colourGiven = false;
 	bool headless = false;
@@ -57,7 +57,6 @@ void usage()
 				 "                         " << harness::solverKindNames() << "\n"
 				 "  --iterations N,M,...   one value for every viewport or one per solver\n"
 				 "                         (default 10,100,10 with the default solvers, else 10)\n"
-				 "  --f F                  plugin weighting in [0, 1] (default 0.5)\n"
 				 "  --dt S                 time step in seconds (default 1/60)\n"
 				 "  --colour MODE          body colours: layers = stack layer (default in the window),\n"
 				 "                         drift = red as a body moves up to 1 cm, plain (default headless)\n"
@@ -73,7 +72,9 @@ void usage()
 				 "  --frame-at S           frame the bodies as they lie at S seconds (last solver), not\n"
 				 "                         as they start (for piles that settle)\n"
 				 "In the window: left drag orbits, right drag pans, the wheel zooms, a middle click or\n"
-				 "shift + left click shoots a box; space pauses, S steps, R resets, F frames the scene.\n";
+				 "shift + left click shoots a box; space pauses, S steps, R resets, F frames the scene.\n"
+				 "plugin settings (one value each):\n";
+	harness::PluginFlags::printUsage(std::cout);
 }
 
 Options parseArguments(int argc, char** argv)
@@ -82,18 +83,13 @@ Options parseArguments(int argc, char** argv)
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string a = argv[i];
-		auto value = [&]() -> std::string {
-			if (i + 1 >= argc) fail("missing value after " + a);
-			return argv[++i];
-		};
-		if (a == "--help" || a == "-h") { usage(); std::exit(0); }
-		else if (a == "--list") { scenes::printRegistry(std::cout); std::exit(0); }
-		else if (a == "--scene") o.setup.scene = value();
+		auto value = [&] { return harness::optionValue(argc, argv, i); };
+		if (harness::parseSharedOption(argc, argv, i, o.plugin, usage)) continue;
+		if (a == "--scene") o.setup.scene = value();
 		else if (a == "--param") o.setup.params.push_back(harness::parseSceneParam(value()));
 		else if (a == "--solvers") o.solvers = harness::splitList(value(), "solver");
 		else if (a == "--iterations")
 			o.iterations = harness::parseIntegerList(value(), "iteration");
-		else if (a == "--f") o.weighting = harness::parseNumber(value());
 		else if (a == "--dt") o.setup.timeStep = harness::parseNumber(value());
 		else if (a == "--colour" || a == "--color")
 		{
@@ -137,7 +133,6 @@ Options parseArguments(int argc, char** argv)
 	}
 	if (!scenes::findScene(o.setup.scene)) fail("unknown scene '" + o.setup.scene + "'; valid scenes: " + scenes::sceneNames());
 	if (!(o.setup.timeStep > 0 && o.setup.timeStep <= 1)) fail("--dt must be in (0, 1] seconds");
-	if (!(o.weighting >= 0 && o.weighting <= 1)) fail("--f must be in [0, 1]");
 	if (o.iterations.empty())
 		o.iterations = o.solvers == std::vector<std::string>{"si", "si", "sp"} ? std::vector<int>{10, 100, 10} : std::vector<int>{10};
 	if (o.iterations.size() != 1 && o.iterations.size() != o.solvers.size())
@@ -150,7 +145,9 @@ Options parseArguments(int argc, char** argv)
 		std::string error;
 		if (!harness::parseSolverKind(o.solvers[k], spec, error)) fail(error);
 		spec.iterations = o.iterations.size() == 1 ? o.iterations[0] : o.iterations[k];
-		spec.weighting = o.weighting;
+		const std::vector<btShockPropagationSettings> settings = o.plugin.expand(spec.settings);
+		if (settings.size() != 1) fail("plugin flags take one value each here (one viewport per solver)");
+		spec.settings = settings.front();
 		o.setup.solvers.push_back(spec);
 	}
 	if (o.solvers.size() > 8) fail("at most 8 solvers (viewports)");

@@ -2,6 +2,7 @@
 // compared solvers, stepped at a fixed rate. Not part of the shipped plugin.
 #pragma once
 
+#include <BulletShockPropagation/btShockPropagationSettings.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <memory>
@@ -28,17 +29,15 @@ enum class SolverKind
 struct SolverSpec
 {
 	SolverKind kind = SolverKind::StockSI;
-	int iterations = 10;  ///< PGS sweeps (for the plugin: every pass)
-	double weighting = 0.5;  ///< f, plugin only (the plugin's default)
+	int iterations = 10;  ///< PGS sweeps: the world's m_numIterations (the plugin's sweep counts follow it)
 	int substeps = 1;     ///< sub-steps per frame (stepSimulation with dt / substeps)
-	int fixationMode = -1;          ///< plugin only: btShockPropagationFixationMode, -1 = default
-	bool globalSecondCorrection = false;  ///< plugin only: the paper's un-layered second correction
-	double correctionSlop = -1;      ///< plugin only: m_correctionSlop in metres, -1 = default (0.18 g dt^2)
-	bool supportOrdering = true;     ///< plugin only: m_supportOrdering (D12)
-	bool weightFeeling = false;      ///< plugin only: m_weightFeeling (D13); names sp-wf, sp-solver-wf
-	int weightIterations = -1;       ///< plugin only: m_weightIterations, -1 = default
-	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp"
-	std::string label() const;  ///< name() with iterations and any non-default plugin option
+	/// The plugin's settings, as an app would pass them (plugin kinds only; the stock kinds ignore
+	/// them). Programs vary them through the plugin flags of harness/CommandLine.h.
+	btShockPropagationSettings settings;
+	/// ShockWorld or ShockSolverOnly: the one place "is this the plugin" is spelled out.
+	bool isPlugin() const { return kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly; }
+	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp", "sp-wf"
+	std::string label() const;  ///< name() with iterations and, for the plugin, f and every non-default plugin flag
 };
 
 /// Names: si, si2f, nncg, mlcp, sp, sp-solver, sp-wf, sp-solver-wf; a "-subN" suffix sets sub-steps (si-sub4).

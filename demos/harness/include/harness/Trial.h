@@ -1,9 +1,11 @@
 // One registry scene under one solver, stepped and measured: the unit the demo program, the
-// seed studies and the benchmarks compare side by side. Not part of the shipped plugin.
+// seed studies, the sweep, the viewer, the behaviour and robustness specs and the benchmarks
+// share (world + scene + teardown, written once). Not part of the shipped plugin.
 #pragma once
 
 #include <harness/Metrics.h>
 #include <harness/Simulation.h>
+#include <harness/Standing.h>
 #include <scenes/Registry.h>
 
 #include <memory>
@@ -13,9 +15,6 @@
 
 namespace harness
 {
-/// A body that moved more than this from where it started has "fallen" (metres).
-constexpr double kStandingDriftMeters = 0.01;
-
 /// What a Trial measured after each step (index k = after step k + 1).
 struct TrialSeries
 {
@@ -53,6 +52,8 @@ public:
 
 	/// One frame: steps the world (timed) and records the metrics.
 	void step();
+	/// step() for `seconds` of simulated time (rounded to whole frames).
+	void run(double seconds);
 
 	Simulation& simulation() { return *m_sim; }
 	const Simulation& simulation() const { return *m_sim; }
@@ -62,6 +63,10 @@ public:
 	const DriftTracker& drift() const { return *m_drift; }
 	const TrialSeries& series() const { return m_series; }
 	int steps() const { return int(m_series.drift.size()); }
+	/// Largest body displacement from the start after any step() so far (m).
+	double maxDrift() const { return m_maxDrift; }
+	/// The scene's body with this key (scenes::SceneContent::named).
+	btRigidBody* named(const std::string& key) const { return m_scene->named(key); }
 	TrialSummary summary() const;
 
 private:
@@ -71,6 +76,7 @@ private:
 	std::unique_ptr<DriftTracker> m_drift;
 	TrialSeries m_series;
 	double m_seconds = 0;
+	double m_maxDrift = 0;
 	double m_collapseTime = -1;
 	bool m_nonFinite = false;
 	int m_layers = 0;
