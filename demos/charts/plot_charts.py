@@ -33,7 +33,7 @@ STYLE = {
     "sp f=0.1": ("#d73027", "X"),
     "sp f=0.25": ("#e7298a", "d"),
     "sp f=0.5": ("#67001f", "*"),
-    "sp-wf f=0.5": ("#000000", "*"),
+    "sp-classic f=0.5": ("#000000", "*"),
 }
 SCENE_TITLES = {
     "tower_10": "tower of 10 boxes",
@@ -162,7 +162,7 @@ def plot_pareto(rows, out_dir):
         fig.tight_layout()
         fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=9, bbox_to_anchor=(0.5, 1.0),
                    title="one marker per iteration count (1, 2, 5, 10, 20, 50, 100, 200, left to right; plugin f = 0.05-0.25 and "
-                         "sp-wf up to 50); hollow: stopped early (a body past 0.1 m, NaN, or MLCP did not finish)", title_fontsize=9)
+                         "sp-classic up to 200); hollow: stopped early (a body past 0.1 m, NaN, or MLCP did not finish)", title_fontsize=9)
         save(fig, out_dir, name)
 
 
@@ -272,8 +272,8 @@ TRUTH_STYLE = {
     "mlcp": ("#7f7f7f", "P"),
     "sp": ("#d73027", "*"),
     "sp-solver": ("#f46d43", "X"),
-    "sp-wf": ("#000000", "p"),
-    "sp-solver-wf": ("#67001f", "h"),
+    "sp-classic": ("#000000", "p"),
+    "sp-solver-classic": ("#67001f", "h"),
 }
 
 

@@ -32,7 +32,7 @@ std::vector<Variant> sweepVariants()
 		variant("sp f=0.1", "sp", 0.1, 50),
 		variant("sp f=0.25", "sp", 0.25, 50),
 		variant("sp f=0.5", "sp", 0.5),
-		variant("sp-wf f=0.5", "sp-wf", 0.5, 50),  // weight feeling (D13): 100 ms a step at 200 on the round tower
+		variant("sp-classic f=0.5", "sp-classic", 0.5, 200),  // Erleben's classic method (no weight feeling)
 	};
 }
 

@@ -34,6 +34,14 @@ void bucket(int numLayers, int numRows, const int* layerOfRow, btAlignedObjectAr
 	for (int i = 0; i < numRows; ++i) rows[cursor[layerOfRow[i]]++] = i;
 }
 
+/// Keep the largest squared velocity change a row made in a sweep (Bullet's row kernels return the
+/// change of the row's velocity, delta impulse / effective mass).
+inline void noteResidual(btScalar& worst, btScalar residual)
+{
+	const btScalar r2 = residual * residual;
+	if (r2 > worst) worst = r2;  // NaN (a row whose ends are both immovable: 0 / 0) is no change
+}
+
 int clampLayer(int layer, int numLayers)
 {
 	return (layer >= 0 && layer < numLayers) ? layer : 0;
@@ -173,8 +181,9 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 	markFixated(layer, 0);
 }
 
-void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolverPools& pools)
+btScalar btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolverPools& pools)
 {
+	btScalar worst = 0;
 	// The order of a stock sweep (btSequentialImpulseConstraintSolver::solveSingleIteration,
 	// contacts and friction not interleaved): joints, contact normals, friction bounded by the
 	// normal impulse, rolling friction bounded by the normal impulse and its own coefficient.
@@ -182,13 +191,13 @@ void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolver
 	for (int i = 0; i < pools.m_joints.size() && hasJoints(layer, pools); ++i)
 	{
 		btSolverConstraint& c = pools.m_joints[i];
-		if (iteration < c.m_overrideNumSolverIterations) pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+		if (iteration < c.m_overrideNumSolverIterations) noteResidual(worst, pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c));
 	}
-	if (iteration >= sweeps) return;  // extra sweeps for joints that ask for more only
+	if (iteration >= sweeps) return worst;  // extra sweeps for joints that ask for more only
 	for (int i = m_contactStart[layer]; i < m_contactStart[layer + 1]; ++i)
 	{
 		btSolverConstraint& c = pools.m_contacts[m_contactRows[i]];
-		pools.m_lowerLimit(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+		noteResidual(worst, pools.m_lowerLimit(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c));
 	}
 	for (int i = m_frictionStart[layer]; i < m_frictionStart[layer + 1]; ++i)
 	{
@@ -198,7 +207,7 @@ void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolver
 		{
 			c.m_lowerLimit = -(c.m_friction * normal);
 			c.m_upperLimit = c.m_friction * normal;
-			pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+			noteResidual(worst, pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c));
 		}
 	}
 	for (int i = m_rollingStart[layer]; i < m_rollingStart[layer + 1]; ++i)
@@ -210,9 +219,10 @@ void btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSolver
 			const btScalar magnitude = btMin(c.m_friction * normal, c.m_friction);
 			c.m_lowerLimit = -magnitude;
 			c.m_upperLimit = magnitude;
-			pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c);
+			noteResidual(worst, pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c));
 		}
 	}
+	return worst;
 }
 
 void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools)
@@ -288,7 +298,7 @@ bool btLayeredPasses::receiveWithheld(int layer, const btSolverPools& pools)
 	return any;
 }
 
-int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackPerGravity,
+int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, const btWeightPassParams& weight,
 									 int* rejected)
 {
 	// Joint rows (all in layer 0, D8) are not re-solved here: they are no part of the load handed
@@ -310,22 +320,31 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		}
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
 		fixate(k, params, pools);
-		for (int iteration = 0; iteration < sweeps; ++iteration) sweep(k, iteration, sweeps, pools);
+		if (weight.m_transfer) transferLoads(k, pools);
+		btScalar lastChange = 0;
+		for (int iteration = 0; iteration < sweeps; ++iteration) lastChange = sweep(k, iteration, sweeps, pools);
 		total += sweeps;
-		// A load from above is carried by the layer's supports: it cannot leave a body moving
-		// faster than before it arrived. If it does, the layer could not carry it within its
-		// sweeps (D13 guard): the layer keeps its state from before the load and hands nothing on.
-		bool carried = true;
-		for (int i = 0; i < numFree && carried; ++i)
+		// D16 guard. A re-solve that converged (its last sweep changed no row's velocity by more
+		// than weight.m_convergedSpeed) stands, whatever it did to the layer: a body under a load
+		// past its support's edge tips. One that did not converge may stand only if it left no
+		// body faster than before its load arrived (by more than the slack): otherwise the
+		// layer could not carry its load within its sweeps, keeps its state from before the
+		// load and hands nothing on (it sags, as the classic method does; never gains energy).
+		bool carried = lastChange <= weight.m_convergedSpeed * weight.m_convergedSpeed;
+		if (!carried)
 		{
-			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
-			if (id < 0) continue;
-			btSolverBody& b = pools.m_bodies[id];
-			const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
-			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
-			const btScalar before = (base + m_before[i].m_deltaLinear).length();
-			const btScalar slack = b.m_originalBody ? slackPerGravity * b.m_originalBody->getGravity().length() : btScalar(0);
-			carried = after <= before + slack;
+			carried = true;
+			for (int i = 0; i < numFree && carried; ++i)
+			{
+				const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
+				if (id < 0) continue;
+				btSolverBody& b = pools.m_bodies[id];
+				const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
+				const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
+				const btScalar before = (base + m_before[i].m_deltaLinear).length();
+				const btScalar slack = b.m_originalBody ? weight.m_slackPerGravity * b.m_originalBody->getGravity().length() : btScalar(0);
+				carried = after <= before + slack;
+			}
 		}
 		if (!carried)
 		{
@@ -344,4 +363,66 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	}
 	m_withJoints = true;
 	return total;
+}
+
+void btLayeredPasses::transferLoads(int layer, const btSolverPools& pools)
+{
+	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
+	if (numFree == 0) return;
+	const int numSolverBodies = pools.m_bodies.size();
+	if (m_localOf.size() != numSolverBodies)
+	{
+		m_localOf.resize(numSolverBodies);
+		for (int i = 0; i < numSolverBodies; ++i) m_localOf[i] = -1;
+	}
+	for (int i = 0; i < numFree; ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
+		if (id >= 0) m_localOf[id] = i;
+	}
+	// Rows with one end free in this layer and the other fixated, grouped by the free body.
+	auto freeEnd = [&](const btSolverConstraint& c, bool& sideA) -> int {
+		// Fixated here, or static (Bullet's shared fixed body): no inverse mass while the layer is solved.
+		const bool fixA = pools.m_bodies[c.m_solverBodyIdA].internalGetInvMass().isZero();
+		const bool fixB = pools.m_bodies[c.m_solverBodyIdB].internalGetInvMass().isZero();
+		if (fixA == fixB) return -1;
+		sideA = !fixA;
+		return m_localOf[sideA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+	};
+	m_transferStart.resize(numFree + 1);
+	for (int i = 0; i <= numFree; ++i) m_transferStart[i] = 0;
+	auto countRows = [&](const btConstraintArray& pool, const btAlignedObjectArray<int>& start, const btAlignedObjectArray<int>& sorted) {
+		for (int i = start[layer]; i < start[layer + 1]; ++i)
+		{
+			bool sideA;
+			const int local = freeEnd(pool[sorted[i]], sideA);
+			if (local >= 0) ++m_transferStart[local + 1];
+		}
+	};
+	countRows(pools.m_contacts, m_contactStart, m_contactRows);
+	countRows(pools.m_frictions, m_frictionStart, m_frictionRows);
+	for (int i = 0; i < numFree; ++i) m_transferStart[i + 1] += m_transferStart[i];
+	m_transferRows.resize(m_transferStart[numFree]);
+	m_transferCursor.resize(numFree);
+	for (int i = 0; i < numFree; ++i) m_transferCursor[i] = m_transferStart[i];
+	auto fillRows = [&](btConstraintArray& pool, const btAlignedObjectArray<int>& start, const btAlignedObjectArray<int>& sorted, bool contact) {
+		for (int i = start[layer]; i < start[layer + 1]; ++i)
+		{
+			bool sideA;
+			btSolverConstraint& c = pool[sorted[i]];
+			const int local = freeEnd(c, sideA);
+			if (local >= 0) m_transferRows[m_transferCursor[local]++] = btLoadTransferRow{&c, sideA, contact};
+		}
+	};
+	fillRows(pools.m_contacts, m_contactStart, m_contactRows, true);
+	fillRows(pools.m_frictions, m_frictionStart, m_frictionRows, false);
+	for (int i = 0; i < numFree; ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
+		if (id < 0) continue;
+		m_localOf[id] = -1;
+		btSolverBody& b = pools.m_bodies[id];
+		const int n = m_transferStart[i + 1] - m_transferStart[i];
+		if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
+	}
 }

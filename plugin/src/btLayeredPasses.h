@@ -17,9 +17,18 @@ subject to the following restrictions:
 
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
 #include "btLayerFixation.h"
+#include "btLoadTransfer.h"
 #include "btWithheldReactions.h"
 
 class btStackLayers;
+
+/// The weight pass's settings for one step (D16).
+struct btWeightPassParams
+{
+	bool m_transfer = true;           ///< load transfer before the sweeps (btLoadTransfer.h)
+	btScalar m_convergedSpeed = 0;    ///< m/s: a re-solve whose last sweep changed no row's velocity by more has converged
+	btScalar m_slackPerGravity = 0;   ///< s: an unconverged re-solve may speed a body up by this times its |g|
+};
 
 /// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
 struct btSolverPools
@@ -74,19 +83,22 @@ public:
 	/// (delivered: the weight pass handed every held-back impulse down, so F = T).
 	void storeFeltShares(const btSolverPools& pools, bool delivered);
 
-	/// D13, top-down: the free bodies of each layer receive what the layers above withheld from
-	/// them, then the layer is re-solved with its own lower bodies fixated (withholding in turn).
-	/// Returns the number of sweeps run.
-	/// Guard: a layer whose re-solve leaves a free body faster than before its load arrived (by
-	/// more than slackPerGravity x |g| of that body, s x m/s^2) could not carry the load; it keeps
-	/// its state from before and hands nothing on (counted in *rejected).
-	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, btScalar slackPerGravity, int* rejected);
+	/// D13/D16, top-down: the free bodies of each layer receive what the layers above withheld from
+	/// them; their support rows take that load (load transfer), then the layer is re-solved with
+	/// its own lower bodies fixated (withholding in turn). Returns the number of sweeps run.
+	/// Guard: a re-solve that did not converge and left a free body faster than before its load
+	/// arrived could not carry the load; it keeps its state from before and hands nothing on
+	/// (counted in *rejected).
+	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, const btWeightPassParams& weight, int* rejected);
 
 
 private:
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);
-	void sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
+	/// One sweep of the layer's rows; returns the largest squared change of a row's velocity.
+	btScalar sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
+	/// Load transfer (btLoadTransfer.h) for every free body of the layer, from the deltas in m_before.
+	void transferLoads(int layer, const btSolverPools& pools);
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
 	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
@@ -122,6 +134,10 @@ private:
 		btVector3 m_deltaAngular;
 	};
 	btAlignedObjectArray<btBodyDelta> m_before;           // weight pass: free bodies before their load
+	// Load transfer: per solver body its index among the layer's free bodies (-1 otherwise), and
+	// the layer's rows with one immovable end grouped by free body (CSR).
+	btAlignedObjectArray<int> m_localOf, m_transferStart, m_transferCursor;
+	btAlignedObjectArray<btLoadTransferRow> m_transferRows;
 
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate

@@ -73,7 +73,9 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	if (!isFiniteScalar(settings.m_correctionSlop)) m_settings.m_correctionSlop = defaults.m_correctionSlop;
 	if (!(settings.m_correctionSlopPerFall >= 0) || !isFiniteScalar(settings.m_correctionSlopPerFall))
 		m_settings.m_correctionSlopPerFall = defaults.m_correctionSlopPerFall;
-	m_settings.m_weightIterations = btMax(1, settings.m_weightIterations);
+	m_settings.m_weightIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_weightIterations);
+	if (!(settings.m_weightConvergence >= 0) || !isFiniteScalar(settings.m_weightConvergence)) m_settings.m_weightConvergence = defaults.m_weightConvergence;
+	if (!(settings.m_warmStartFactor <= 1) || !isFiniteScalar(settings.m_warmStartFactor)) m_settings.m_warmStartFactor = defaults.m_warmStartFactor;
 	if (!isFiniteScalar(settings.m_supportAngle)) m_settings.m_supportAngle = defaults.m_supportAngle;
 	if (!(settings.m_warmStartCoupling >= 0 && settings.m_warmStartCoupling <= 1)) m_settings.m_warmStartCoupling = defaults.m_warmStartCoupling;
 	if (!(settings.m_warmStartWeights >= 0)) m_settings.m_warmStartWeights = defaults.m_warmStartWeights;
@@ -199,6 +201,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	btContactSolverInfo stepInfo = info;
 	stepInfo.m_erp2 = btScalar(0);
 	stepInfo.m_splitImpulse = false;
+	if (m_settings.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_warmStartFactor;  // D16
 	if (m_settings.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	limitWarmStart(info);
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
@@ -249,10 +252,13 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	if (weightFeeling)
 	{
 		clock.reset();
-		// The guard's slack, per body: a share of the speed its gravity gives it in one step.
-		const btScalar slackPerGravity = m_settings.m_weightGuardSlack * info.m_timeStep;
-		m_stats.m_numWeightSweeps +=
-			m_passes->solveWeightPass(m_settings.m_weightIterations, params, pools, slackPerGravity, &m_stats.m_numWeightRejections);
+		// The guard's scales (D16), per body and per step: shares of the speed gravity gives in one step.
+		btWeightPassParams weight;
+		weight.m_transfer = m_settings.m_loadTransfer;
+		weight.m_slackPerGravity = m_settings.m_weightGuardSlack * info.m_timeStep;
+		weight.m_convergedSpeed = m_settings.m_weightConvergence * largestGravity() * info.m_timeStep;
+		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(sweepCount(m_settings.m_weightIterations, worldIterations), params, pools,
+															   weight, &m_stats.m_numWeightRejections);
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 
@@ -263,6 +269,17 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	solveGroupCacheFriendlyFinish(bodies, m_bodies.size(), stepInfo);
 	correctPositions(info, false, true);
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
+}
+
+btScalar btShockPropagationConstraintSolver::largestGravity() const
+{
+	btScalar g = 0;
+	for (int i = 0; i < m_bodies.size(); ++i)
+	{
+		const btRigidBody* rb = btRigidBody::upcast(m_bodies[i]);
+		if (rb && rb->getInvMass() > btScalar(0)) g = btMax(g, rb->getGravity().length());
+	}
+	return g;
 }
 
 void btShockPropagationConstraintSolver::limitWarmStart(const btContactSolverInfo& info)

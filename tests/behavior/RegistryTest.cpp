@@ -36,7 +36,7 @@ std::vector<std::string> allScenes()
 	return names;
 }
 
-const std::vector<std::string> kSolvers = {"si", "si2f", "nncg", "mlcp", "si-sub4", "sp", "sp-solver", "sp-wf"};
+const std::vector<std::string> kSolvers = {"si", "si2f", "nncg", "mlcp", "si-sub4", "sp", "sp-solver", "sp-classic"};
 
 /// Fastest a body could move after 1 s from the scenes' own energy: a fall from the highest
 /// start (under 12 m in every small instance) or the fastest initial speed (5 m/s), with margin.

@@ -130,7 +130,7 @@ const std::vector<PluginFlag>& pluginFlags()
 				   &btShockPropagationSettings::m_correctionSlop, "slop", [](double m) { return m >= 0 || m == -1; }, ">= 0 metres"),
 		switchFlag("--bfs-layers", "plugin: plain BFS layers, no support ordering (D12 off)", &btShockPropagationSettings::m_supportOrdering,
 				   false, "bfs"),
-		numberFlag("--weight-sweeps", "N,...", "plugin with weight feeling (sp-wf): sweeps per loaded layer (default 40; D13)",
+		numberFlag("--weight-sweeps", "N,...", "plugin: sweeps per layer of the weight pass (default: the app's iterations; D16)",
 				   &btShockPropagationSettings::m_weightIterations, "sweeps", [](double n) { return n >= 1; }, ">= 1"),
 	};
 	return table;

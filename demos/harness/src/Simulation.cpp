@@ -27,10 +27,10 @@ const KindName kKinds[] = {
 	{"si2f", SolverKind::StockSI2Friction, false, "stock SI with two friction directions"},
 	{"nncg", SolverKind::NNCG, false, "stock btNNCGConstraintSolver"},
 	{"mlcp", SolverKind::MLCPDantzig, false, "stock btMLCPSolver with btDantzigSolver (cfm 1e-4)"},
-	{"sp", SolverKind::ShockWorld, false, "shock propagation, btShockPropagationDynamicsWorld"},
-	{"sp-solver", SolverKind::ShockSolverOnly, false, "shock propagation solver in a stock world"},
-	{"sp-wf", SolverKind::ShockWorld, true, "shock propagation with weight feeling (D13)"},
-	{"sp-solver-wf", SolverKind::ShockSolverOnly, true, "shock propagation solver with weight feeling in a stock world"},
+	{"sp", SolverKind::ShockWorld, true, "shock propagation, btShockPropagationDynamicsWorld (defaults: weight feeling, D16)"},
+	{"sp-solver", SolverKind::ShockSolverOnly, true, "shock propagation solver in a stock world (defaults)"},
+	{"sp-classic", SolverKind::ShockWorld, false, "Erleben's classic method: no weight feeling (lower bodies never feel the upper ones)"},
+	{"sp-solver-classic", SolverKind::ShockSolverOnly, false, "the classic method's solver in a stock world"},
 };
 
 /// A world that adds the wall-clock time of each collision detection to *sink (milliseconds).

@@ -32,7 +32,7 @@ const char* kUsage =
 	"usage: bsp_truth [--configs LIST] [--cases LIST] [--csv FILE] [--md FILE] [--timeout S] [--list]\n"
 	"  --configs  comma-separated solver:iterations, e.g. si:10,si-sub4:10,sp:5,mlcp (iterations default 10);\n"
 	"             default: si at 1,2,5,10,20,50,100,200; si2f:10; si-sub2/4/8 at 10; nncg at 10, 50; mlcp;\n"
-	"             sp and sp-solver at 5, 10, 20; sp-wf:10\n"
+	"             sp and sp-solver at 5, 10, 20; sp-classic:10\n"
 	"  --cases    comma-separated case or group names (default: every case)\n"
 	"  --csv      CSV output (default demos/charts/results/truth.csv under the source tree)\n"
 	"  --md       markdown table output (default: standard output)\n"
@@ -87,7 +87,7 @@ bool parseConfig(const std::string& token, Config& config, std::string& error)
 std::string defaultConfigs()
 {
 	return "si:1,si:2,si:5,si:10,si:20,si:50,si:100,si:200,si2f:10,si-sub2:10,si-sub4:10,si-sub8:10,nncg:10,nncg:50,mlcp,"
-		   "sp:5,sp:10,sp:20,sp-solver:5,sp-solver:10,sp-solver:20,sp-wf:10";
+		   "sp:5,sp:10,sp:20,sp-solver:5,sp-solver:10,sp-solver:20,sp-classic:10";
 }
 
 // Verdict through a pipe: one line of numbers, then unit and detail on their own lines.

@@ -114,6 +114,7 @@ private:
 	void buildGraph();
 	void solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void assignRowsToLayers();
+	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
 	void limitWarmStart(const btContactSolverInfo& info);
 	/// Position correction of the group's contacts; fresh: depths from the current transforms.
 	void correctPositions(const btContactSolverInfo& info, bool fresh, bool layered);

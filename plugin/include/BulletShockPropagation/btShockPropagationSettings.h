@@ -157,21 +157,42 @@ struct btShockPropagationSettings
 	/// 4 s, 0.25 lets the 9,870-box pyramid creep from 8 s; 0.2 does neither.
 	btScalar m_warmStartCoupling = btScalar(0.2);
 
-	/// Weight feeling (D13, in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
+	/// Weight feeling (D13, D16; in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
 	/// 2025): after the bottom-up layer pass, a top-down pass hands each layer's impulses, which
-	/// fixation withheld from the bodies below, to those bodies and re-solves their layer, so the
-	/// ground carries the whole stack and loads tip what they rest on.
-	bool m_weightFeeling = false;
+	/// fixation withheld from the bodies below, to those bodies, whose support rows take the load
+	/// on (m_loadTransfer) before their layer is re-solved. The ground carries the whole stack,
+	/// friction capacity is that of the whole weight, and a load past a support's edge tips it.
+	/// Default on; off gives Erleben's classic method (lower bodies never feel the upper ones).
+	bool m_weightFeeling = true;
 
-	/// PGS sweeps of each layer's re-solve in the weight pass (count). The load handed down has
-	/// to be carried within the step: 40 hold the wall and the pyramid (D13).
-	int m_weightIterations = 40;
+	/// PGS sweeps of each layer's re-solve in the weight pass (count). BT_SHOCK_ITERATIONS_FROM_WORLD
+	/// (default): the world's m_numIterations.
+	int m_weightIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
 
-	/// Weight pass guard (D13), as a share of g dt (unitless): a layer whose re-solve leaves a body
-	/// faster than before its load arrived by more than this could not carry the load and keeps
-	/// its state from before. Measured in docs/design.md (without it the round tower and the wall
-	/// blow up within 0.05 and 0.43 s under weight feeling).
+	/// D16: before its layer's re-solve, a body's support rows take the load handed down to it in
+	/// one least-squares step (btLoadTransfer), instead of sweep by sweep. Without it the share
+	/// PGS leaves after N sweeps is handed down through every layer below and comes back the
+	/// next step (measured in docs/design.md, D16: a pyramid of base 12 diverges at 10 sweeps).
+	bool m_loadTransfer = true;
+
+	/// D16 convergence test of a weight-pass re-solve, as a share of |g| dt (unitless): a re-solve
+	/// whose last sweep changed no row's velocity by more than this has converged and stands
+	/// (1 mm/s at 9.81 m/s^2 and 60 Hz).
+	btScalar m_weightConvergence = btScalar(0.006);
+
+	/// Weight pass guard (D16), as a share of g dt (unitless): a re-solve that has not converged
+	/// and leaves a body faster than before its load arrived by more than this could not carry
+	/// the load; the layer keeps its state from before and hands nothing on (it sags, it never
+	/// gains energy). Measured in docs/design.md, D16.
 	btScalar m_weightGuardSlack = btScalar(0.1);
+
+	/// Warm-start factor of stacked groups (unitless, 0..1). Bullet scales each contact's cached
+	/// impulse by the app's m_warmstartingFactor (0.85 by default), a damping for plain PGS. Here
+	/// the layered passes would then push 15% of every load through every layer again each step,
+	/// and at 10 sweeps the wall and the pyramid of base 30 diverge (D16, measured). 1 (default)
+	/// starts from the impulses the last step ended with; negative: the app's factor. Groups
+	/// without stacks always use the app's. Warm starting off in the app stays off.
+	btScalar m_warmStartFactor = btScalar(1);
 };
 
 #endif  // BT_SHOCK_PROPAGATION_SETTINGS_H

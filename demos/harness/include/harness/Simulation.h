@@ -36,11 +36,11 @@ struct SolverSpec
 	btShockPropagationSettings settings;
 	/// ShockWorld or ShockSolverOnly: the one place "is this the plugin" is spelled out.
 	bool isPlugin() const { return kind == SolverKind::ShockWorld || kind == SolverKind::ShockSolverOnly; }
-	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp", "sp-wf"
+	std::string name() const;   ///< the solver name as parsed, e.g. "si-sub4", "sp", "sp-classic"
 	std::string label() const;  ///< name() with iterations and, for the plugin, f and every non-default plugin flag
 };
 
-/// Names: si, si2f, nncg, mlcp, sp, sp-solver, sp-wf, sp-solver-wf; a "-subN" suffix sets sub-steps (si-sub4).
+/// Names: si, si2f, nncg, mlcp, sp, sp-solver, sp-classic, sp-solver-classic; a "-subN" suffix sets sub-steps (si-sub4).
 /// Returns false with a message listing the valid names.
 bool parseSolverKind(const std::string& text, SolverSpec& spec, std::string& error);
 std::string solverKindNames();

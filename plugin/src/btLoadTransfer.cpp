@@ -1,0 +1,131 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "btLoadTransfer.h"
+
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+
+namespace
+{
+/// Row i's velocity change per unit impulse on its body, as Bullet's kernels apply it
+/// (btSolverBody::internalApplyImpulse with the row's W J^T and the body's factors).
+void velocityPerImpulse(const btSolverBody& body, const btLoadTransferRow& r, btScalar out[6])
+{
+	const btSolverConstraint& c = *r.m_row;
+	const btVector3 linear = (r.m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass() * body.m_linearFactor;
+	const btVector3 angular = (r.m_sideA ? c.m_angularComponentA : c.m_angularComponentB) * body.m_angularFactor;
+	for (int j = 0; j < 3; ++j)
+	{
+		out[j] = linear[j];
+		out[3 + j] = angular[j];
+	}
+}
+
+/// Solves (A + eps I) x = b for a symmetric positive semi-definite 6 x 6 A (Cholesky).
+/// Returns false if A is zero.
+bool solveRegularized(btScalar A[6][6], const btScalar b[6], btScalar x[6])
+{
+	btScalar trace = 0;
+	for (int i = 0; i < 6; ++i) trace += A[i][i];
+	if (!(trace > btScalar(0))) return false;
+	// Directions the rows cannot reach keep their velocity; a small relative regularisation
+	// keeps the factorisation defined there (float: 1e-6 of the mean diagonal).
+	const btScalar eps = trace * btScalar(1e-6) / btScalar(6);
+	btScalar L[6][6] = {};
+	for (int i = 0; i < 6; ++i)
+	{
+		for (int j = 0; j <= i; ++j)
+		{
+			btScalar sum = A[i][j] + (i == j ? eps : btScalar(0));
+			for (int k = 0; k < j; ++k) sum -= L[i][k] * L[j][k];
+			if (i == j)
+			{
+				if (!(sum > btScalar(0))) return false;
+				L[i][i] = btSqrt(sum);
+			}
+			else
+				L[i][j] = sum / L[j][j];
+		}
+	}
+	btScalar y[6];
+	for (int i = 0; i < 6; ++i)
+	{
+		btScalar sum = b[i];
+		for (int k = 0; k < i; ++k) sum -= L[i][k] * y[k];
+		y[i] = sum / L[i][i];
+	}
+	for (int i = 5; i >= 0; --i)
+	{
+		btScalar sum = y[i];
+		for (int k = i + 1; k < 6; ++k) sum -= L[k][i] * x[k];
+		x[i] = sum / L[i][i];
+	}
+	return true;
+}
+}  // namespace
+
+btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const btVector3& beforeAngular, const btLoadTransferRow* rows,
+						int numRows, const btConstraintArray& contacts)
+{
+	if (!body.m_originalBody || numRows == 0) return btScalar(0);
+	const btVector3 dv = body.internalGetDeltaLinearVelocity() - beforeLinear;
+	const btVector3 dw = body.internalGetDeltaAngularVelocity() - beforeAngular;
+	const btScalar target[6] = {-dv[0], -dv[1], -dv[2], -dw[0], -dw[1], -dw[2]};
+	// Normal equations of min |d_lambda|^2 subject to H d_lambda = target, H = [h_1 ... h_m]:
+	// d_lambda = H^T (H H^T)^-1 target, H H^T = sum of h_i h_i^T (6 x 6).
+	btScalar A[6][6] = {};
+	btScalar h[6];
+	for (int i = 0; i < numRows; ++i)
+	{
+		velocityPerImpulse(body, rows[i], h);
+		for (int a = 0; a < 6; ++a)
+			for (int b = 0; b <= a; ++b) A[a][b] += h[a] * h[b];
+	}
+	for (int a = 0; a < 6; ++a)
+		for (int b = a + 1; b < 6; ++b) A[a][b] = A[b][a];
+	btScalar y[6];
+	if (!solveRegularized(A, target, y)) return btScalar(0);
+
+	btScalar moved = 0;
+	// Contact normals first: the friction bounds follow their new normal impulses.
+	for (int pass = 0; pass < 2; ++pass)
+		for (int i = 0; i < numRows; ++i)
+		{
+			const btLoadTransferRow& r = rows[i];
+			if (r.m_contact != (pass == 0)) continue;
+			btSolverConstraint& c = *r.m_row;
+			velocityPerImpulse(body, r, h);
+			btScalar change = 0;
+			for (int a = 0; a < 6; ++a) change += h[a] * y[a];
+			const btScalar before = c.m_appliedImpulse;
+			btScalar after = before + change;
+			if (r.m_contact)
+				after = btMax(btScalar(0), after);
+			else
+			{
+				const int contact = c.m_frictionIndex;
+				const btScalar normal = (contact >= 0 && contact < contacts.size()) ? btScalar(contacts[contact].m_appliedImpulse) : btScalar(0);
+				const btScalar bound = c.m_friction * btMax(btScalar(0), normal);
+				after = btMax(-bound, btMin(bound, after));
+			}
+			if (!(after == after)) continue;  // NaN: the row is left to the sweeps
+			change = after - before;
+			if (change == btScalar(0)) continue;
+			c.m_appliedImpulse = after;
+			body.internalApplyImpulse((r.m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass(),
+									  r.m_sideA ? c.m_angularComponentA : c.m_angularComponentB, change);
+			moved += btFabs(change);
+		}
+	return moved;
+}

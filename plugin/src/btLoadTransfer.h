@@ -1,0 +1,50 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_LOAD_TRANSFER_H
+#define BT_SHOCK_PROPAGATION_LOAD_TRANSFER_H
+
+#include "BulletDynamics/ConstraintSolver/btSolverBody.h"
+#include "BulletDynamics/ConstraintSolver/btSolverConstraint.h"
+#include "LinearMath/btAlignedObjectArray.h"
+
+/// Load transfer of the downward pass (D16; private to the plugin).
+///
+/// A body whose supports are fixated receives the impulse its loads pressed on it: a change of
+/// its velocity, delta = (dv, dw). Its support rows must take that load on to the bodies below.
+/// Projected Gauss-Seidel does it row by row and leaves a share rho^N of it after N sweeps; a
+/// load passed down through K layers leaves about rho^N K^2 of the weight above as velocity,
+/// which the next step hands down again (measured: a pyramid of base 12 diverges at 10 sweeps,
+/// base 30 needs 60). Here the body's support rows take it in one step, the way a statics
+/// solution of the body alone would: the smallest change of their impulses d_lambda (least
+/// squares) with sum_i d_lambda_i W J_i^T = -delta, where W J_i^T is row i's velocity change per
+/// unit impulse on this body. The change is then projected onto each row's limits (contact
+/// normals push, friction within the cone), so what the contacts cannot carry (a load past the
+/// support's edge, a push beyond friction) stays as motion: the sweeps that follow resolve it,
+/// and the body tips or slides. 6 x 6 normal equations per body, O(rows) per body.
+struct btLoadTransferRow
+{
+	btSolverConstraint* m_row;
+	bool m_sideA;  ///< the body is side A of the row
+	bool m_contact;  ///< contact normal (else friction, bounded by its contact row)
+};
+
+/// Undo the velocity change of `body` since its solver deltas were (beforeLinear, beforeAngular)
+/// through `rows` (see above), whose other ends are immovable while this runs. contacts: the
+/// step's contact pool (friction rows find their normal impulse through m_frictionIndex).
+/// Returns the total impulse magnitude moved onto the rows.
+btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const btVector3& beforeAngular,
+						const btLoadTransferRow* rows, int numRows, const btConstraintArray& contacts);
+
+#endif  // BT_SHOCK_PROPAGATION_LOAD_TRANSFER_H
