@@ -321,16 +321,23 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
 		fixate(k, params, pools);
 		if (weight.m_transfer) transferLoads(k, pools);
+		// Sweeps until the re-solve converges (no row's velocity changed by more than
+		// m_convergedSpeed in the last sweep), at most `sweeps`.
+		const btScalar converged2 = weight.m_convergedSpeed * weight.m_convergedSpeed;
 		btScalar lastChange = 0;
-		for (int iteration = 0; iteration < sweeps; ++iteration) lastChange = sweep(k, iteration, sweeps, pools);
-		total += sweeps;
+		for (int iteration = 0; iteration < sweeps; ++iteration)
+		{
+			lastChange = sweep(k, iteration, sweeps, pools);
+			++total;
+			if (lastChange <= converged2) break;
+		}
 		// D16 guard. A re-solve that converged (its last sweep changed no row's velocity by more
 		// than weight.m_convergedSpeed) stands, whatever it did to the layer: a body under a load
 		// past its support's edge tips. One that did not converge may stand only if it left no
 		// body faster than before its load arrived (by more than the slack): otherwise the
 		// layer could not carry its load within its sweeps, keeps its state from before the
 		// load and hands nothing on (it sags, as the classic method does; never gains energy).
-		bool carried = lastChange <= weight.m_convergedSpeed * weight.m_convergedSpeed;
+		bool carried = lastChange <= converged2;
 		if (!carried)
 		{
 			carried = true;

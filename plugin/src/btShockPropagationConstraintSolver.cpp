@@ -257,7 +257,9 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_transfer = m_settings.m_loadTransfer;
 		weight.m_slackPerGravity = m_settings.m_weightGuardSlack * info.m_timeStep;
 		weight.m_convergedSpeed = m_settings.m_weightConvergence * largestGravity() * info.m_timeStep;
-		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(sweepCount(m_settings.m_weightIterations, worldIterations), params, pools,
+		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
+		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
+		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
 															   weight, &m_stats.m_numWeightRejections);
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
