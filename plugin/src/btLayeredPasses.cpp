@@ -79,6 +79,8 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		if (id >= 0 && id < numSolverBodies) m_nodeOfSolverBody[id] = node;
 	}
 	m_withheld.reset(solverBodyOfNode.size(), pools.m_contacts.size());
+	m_pushSpeed.resize(solverBodyOfNode.size());
+	for (int i = 0; i < m_pushSpeed.size(); ++i) m_pushSpeed[i] = 0;
 }
 
 void btLayeredPasses::bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
@@ -177,6 +179,13 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		if (!withhold || change == btScalar(0)) return;
 		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
 		withholdFromFixated(c, fixA, change);
+		if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
+		{
+			// How fast the free end pressed on the fixated one at setup (m/s along the normal):
+			// a load handed down cannot push a body faster than that (D16 guard).
+			const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+			if (node >= 0) m_pushSpeed[node] = btMax(m_pushSpeed[node], c.m_rhs / c.m_jacDiagABInv);
+		}
 	});
 	markFixated(layer, 0);
 }
@@ -337,24 +346,34 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		// body faster than before its load arrived (by more than the slack): otherwise the
 		// layer could not carry its load within its sweeps, keeps its state from before the
 		// load and hands nothing on (it sags, as the classic method does; never gains energy).
-		bool carried = lastChange <= converged2;
-		if (!carried)
+		// D16 guard. A load handed down cannot push a body faster than the bodies that pressed it
+		// on it moved towards it (an inelastic push), plus the slack. A re-solve that leaves a
+		// free body's centre of mass faster than that could not carry its load within its sweeps;
+		// unless it converged and the gain stays within m_tipGain steps of free fall: a body
+		// tipping under a load past its support's edge (measured: BenchmarkDemo's leaning
+		// columns gain up to 6, the hostile worlds' mass-ratio blow-ups 18 to 4e5).
+		const bool converged = lastChange <= converged2;
+		bool anyRejected = false;
+		for (int i = 0; i < numFree; ++i)
 		{
-			carried = true;
-			for (int i = 0; i < numFree && carried; ++i)
-			{
-				const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
-				if (id < 0) continue;
-				btSolverBody& b = pools.m_bodies[id];
-				const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
-				const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
-				const btScalar before = (base + m_before[i].m_deltaLinear).length();
-				const btScalar slack = b.m_originalBody ? weight.m_slackPerGravity * b.m_originalBody->getGravity().length() : btScalar(0);
-				carried = after <= before + slack;
-			}
+			const int node = m_layers->getFreeBody(k, i);
+			const int id = m_solverBodyOfNode[node];
+			if (id < 0) continue;
+			btSolverBody& b = pools.m_bodies[id];
+			const btScalar fall = b.m_originalBody ? b.m_originalBody->getGravity().length() * weight.m_timeStep : btScalar(0);
+			const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
+			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
+			const btScalar before = (base + m_before[i].m_deltaLinear).length();
+			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
+			// Not carried: unless it converged and the gain stays within m_tipGain steps of free
+			// fall (a body tipping under a load past its support's edge).
+			if (converged && after <= before + weight.m_tipGain * fall) continue;
+			anyRejected = true;
+			break;
 		}
-		if (!carried)
+		if (anyRejected)
 		{
+			// The layer keeps its state from before its load (every free body and row).
 			int row = 0;
 			visitLayerRows(k, pools, [&](btSolverConstraint& c, btSolverRowKind) { c.m_appliedImpulse = m_impulseBefore[row++]; });
 			for (int i = 0; i < numFree; ++i)
@@ -433,3 +452,4 @@ void btLayeredPasses::transferLoads(int layer, const btSolverPools& pools)
 		if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
 	}
 }
+

@@ -27,7 +27,9 @@ struct btWeightPassParams
 {
 	bool m_transfer = true;           ///< load transfer before the sweeps (btLoadTransfer.h)
 	btScalar m_convergedSpeed = 0;    ///< m/s: a re-solve whose last sweep changed no row's velocity by more has converged
-	btScalar m_slackPerGravity = 0;   ///< s: an unconverged re-solve may speed a body up by this times its |g|
+	btScalar m_timeStep = 0;          ///< s
+	btScalar m_slack = 0;             ///< an unconverged re-solve may speed a body up by this share of its |g| dt
+	btScalar m_tipGain = 1;           ///< a converged one by this share (a body tipping under its load)
 };
 
 /// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
@@ -139,6 +141,7 @@ private:
 	btAlignedObjectArray<int> m_localOf, m_transferStart, m_transferCursor;
 	btAlignedObjectArray<btLoadTransferRow> m_transferRows;
 
+	btAlignedObjectArray<btScalar> m_pushSpeed;  // per graph node: fastest approach of a body whose load it got (m/s)
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 };

@@ -28,6 +28,7 @@ subject to the following restrictions:
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <new>
 #include <stdexcept>
 
@@ -80,6 +81,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	if (!(settings.m_warmStartCoupling >= 0 && settings.m_warmStartCoupling <= 1)) m_settings.m_warmStartCoupling = defaults.m_warmStartCoupling;
 	if (!(settings.m_warmStartWeights >= 0)) m_settings.m_warmStartWeights = defaults.m_warmStartWeights;
 	if (!(settings.m_weightGuardSlack >= 0) || !isFiniteScalar(settings.m_weightGuardSlack)) m_settings.m_weightGuardSlack = defaults.m_weightGuardSlack;
+	if (!(settings.m_weightGuardTipping >= 0) || !isFiniteScalar(settings.m_weightGuardTipping)) m_settings.m_weightGuardTipping = defaults.m_weightGuardTipping;
 }
 
 int btShockPropagationConstraintSolver::sweepCount(int setting, int worldIterations) const
@@ -255,12 +257,19 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		// The guard's scales (D16), per body and per step: shares of the speed gravity gives in one step.
 		btWeightPassParams weight;
 		weight.m_transfer = m_settings.m_loadTransfer;
-		weight.m_slackPerGravity = m_settings.m_weightGuardSlack * info.m_timeStep;
+		weight.m_timeStep = info.m_timeStep;
+		weight.m_slack = m_settings.m_weightGuardSlack;
+		weight.m_tipGain = m_settings.m_weightGuardTipping;
 		weight.m_convergedSpeed = m_settings.m_weightConvergence * largestGravity() * info.m_timeStep;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
 															   weight, &m_stats.m_numWeightRejections);
+		for (int cycle = 1; cycle < (getenv("CYCLES") ? atoi(getenv("CYCLES")) : 1); ++cycle)
+		{
+			for (int k = 0; k < m_passes->getNumLayers(); ++k) m_passes->solveLayer(k, layerSweeps, params, weightFeeling, pools);
+			m_passes->solveWeightPass(weightSweeps, params, pools, weight, &m_stats.m_numWeightRejections);
+		}
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 
