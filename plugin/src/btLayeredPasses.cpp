@@ -367,7 +367,14 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
 			// Not carried: unless it converged and the gain stays within m_tipGain steps of free
 			// fall (a body tipping under a load past its support's edge).
-			if (converged && after <= before + weight.m_tipGain * fall) continue;
+			if (converged && after <= before + weight.m_tipGain * fall)
+			{
+				// Tipping pivots a body on its support; a body pressed down into what is below it
+				// has not carried its load.
+				const btVector3 down = b.m_originalBody->getGravity() / btMax(fall / weight.m_timeStep, SIMD_EPSILON);
+				const btScalar sink = (b.internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear).dot(down);
+				if (sink <= weight.m_slack * fall) continue;
+			}
 			anyRejected = true;
 			break;
 		}

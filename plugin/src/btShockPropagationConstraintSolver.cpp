@@ -28,7 +28,6 @@ subject to the following restrictions:
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <new>
 #include <stdexcept>
 
@@ -203,7 +202,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	btContactSolverInfo stepInfo = info;
 	stepInfo.m_erp2 = btScalar(0);
 	stepInfo.m_splitImpulse = false;
-	if (m_settings.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_warmStartFactor;  // D16
+	if (m_settings.m_weightFeeling && m_settings.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_warmStartFactor;  // D16
 	if (m_settings.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	limitWarmStart(info);
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
@@ -265,11 +264,6 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
 															   weight, &m_stats.m_numWeightRejections);
-		for (int cycle = 1; cycle < (getenv("CYCLES") ? atoi(getenv("CYCLES")) : 1); ++cycle)
-		{
-			for (int k = 0; k < m_passes->getNumLayers(); ++k) m_passes->solveLayer(k, layerSweeps, params, weightFeeling, pools);
-			m_passes->solveWeightPass(weightSweeps, params, pools, weight, &m_stats.m_numWeightRejections);
-		}
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 

@@ -27,7 +27,16 @@ inline harness::SolverSpec shockSolverOnly(int iterations = 10, double f = btSho
 	return s;
 }
 
-/// The plugin with weight feeling (D13): the world, default settings otherwise.
+/// Erleben's classic method: the plugin without weight feeling (lower bodies never feel the upper
+/// ones), the world, default settings otherwise.
+inline harness::SolverSpec classic(int iterations = 10, double f = btShockPropagationSettings().m_weighting)
+{
+	harness::SolverSpec s = shock(iterations, f);
+	s.settings.m_weightFeeling = false;
+	return s;
+}
+
+/// The plugin's defaults (weight feeling on since D16), world mode.
 inline harness::SolverSpec weightFeeling(int iterations = 10, double f = btShockPropagationSettings().m_weighting)
 {
 	harness::SolverSpec s = shock(iterations, f);

@@ -28,7 +28,7 @@ class HardCase : public ::testing::TestWithParam<harness::SolverSpec>
 std::string solverName(const ::testing::TestParamInfo<harness::SolverSpec>& info)
 {
 	if (info.param.kind == harness::SolverKind::StockSI) return "StockSI";
-	return info.param.settings.m_weightFeeling ? "ShockPropagationWeightFeeling" : "ShockPropagation";
+	return info.param.settings.m_weightFeeling ? "ShockPropagation" : "ShockPropagationClassic";
 }
 }  // namespace
 
@@ -143,7 +143,7 @@ TEST_P(HardCase, LeaningStackWhoseBoxesOverhangHalfTopples)
 	EXPECT_GT(run.drift().drift(run.named("top")), 0.5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, HardCase, ::testing::Values(spec::shock(), spec::weightFeeling(), spec::stock(10)), solverName);
+INSTANTIATE_TEST_SUITE_P(Registry, HardCase, ::testing::Values(spec::shock(), spec::classic(), spec::stock(10)), solverName);
 
 // Where stock SI fails, the plugin's expectation alone.
 
@@ -188,7 +188,9 @@ TEST(HardCaseShock, BfsLayersWithoutSupportOrderingJamTheDoor)
 {
 	// The failure the support ordering exists for (docs/design.md, D12): with plain BFS layers the
 	// right column's top box is clamped between the fixated lintel and the fixated box below it.
-	harness::Trial run(spec::shock(), "door");
+	// Shown on the classic method: with weight feeling (D16) the lintel's load reaches the column
+	// anyway and the door holds even without the ordering (measured 0.5 cm in 2 s).
+	harness::Trial run(spec::classic(), "door");
 	btShockPropagationSettings settings = run.simulation().shockSolver()->getSettings();
 	settings.m_supportOrdering = false;
 	run.simulation().shockSolver()->setSettings(settings);
