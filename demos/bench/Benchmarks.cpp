@@ -16,7 +16,8 @@
 //   mode (sp-solver), on the registry's towers, pyramids, wall, round tower, a scene without stacks and
 //   the BenchmarkDemo ports, each at the scene's app iteration count. The three worlds are stepped in
 //   lockstep in one process (one step of each in turn, the order rotating every step), so machine noise
-//   hits all three alike. Prints one table, then the per-phase split.
+//   hits all three alike. Timed over 2 s after 10 warm-up steps (towers, boxes_3000: 10 s); --steps sets every
+//   scene's count. Prints one table, then the per-phase split.
 #include <BulletShockPropagation/btContactGraph.h>
 #include <BulletShockPropagation/btShockPropagationConstraintSolver.h>
 #include <BulletShockPropagation/btShockPropagationSettings.h>
@@ -196,6 +197,10 @@ struct RatioCase
 	std::string label;  ///< as printed
 	std::string scene;
 	Overrides overrides;
+	/// Timed steps when --steps is not given (0: RatioOptions::steps). boxes_3000 needs 10 s: its 47
+	/// layers fall together and pile up one after another for about 6 s, so 2 s would time free fall.
+	/// The towers take 10 s too: at 0.1 ms a step, 2 s is too short a sample against machine noise.
+	int steps = 0;
 };
 
 /// The scenes issue 16 measures: towers, pyramids, wall, round tower, a scene without stacks (at rest
@@ -203,8 +208,8 @@ struct RatioCase
 std::vector<RatioCase> ratioCases()
 {
 	return {
-		{"tower n=20", "tower", {{"n", 20}}},
-		{"tower n=40", "tower", {{"n", 40}}},
+		{"tower n=20 (10 s)", "tower", {{"n", 20}}, 600},
+		{"tower n=40 (10 s)", "tower", {{"n", 40}}, 600},
 		{"pyramid base=20", "pyramid", {{"base", 20}}},
 		{"pyramid base=30", "pyramid", {{"base", 30}}},
 		{"wall", "wall", {}},
@@ -212,14 +217,15 @@ std::vector<RatioCase> ratioCases()
 		{"flat_boxes (rest)", "flat_boxes", {}},
 		{"flat_boxes v0=3 mu=0.1", "flat_boxes", {{"v0", 3}, {"mu", 0.1}}},
 		{"stack_1000", "stack_1000", {}},
-		{"boxes_3000", "boxes_3000", {}},
+		{"boxes_3000 (10 s)", "boxes_3000", {}, 600},
 	};
 }
 
 struct RatioOptions
 {
 	int warmup = 10;   ///< steps of each world before timing
-	int steps = 120;   ///< timed steps of each world (2 s at 60 Hz)
+	int steps = 120;   ///< timed steps of each world (2 s at 60 Hz), unless the case says otherwise
+	bool stepsGiven = false;  ///< --steps given: it applies to every case
 	std::vector<std::string> only;  ///< labels or scene names to run (empty: all)
 };
 
@@ -242,7 +248,8 @@ RatioRow measureRatio(const RatioCase& c, const RatioOptions& o)
 	row.bodies = int(trials[0]->bodies().size());
 	row.iterations = trials[0]->simulation().world().getSolverInfo().m_numIterations;
 	PhaseSums* sums[3] = {&row.si, &row.sp, &row.spSolver};
-	for (int i = 0; i < o.warmup + o.steps; ++i)
+	const int steps = (c.steps > 0 && !o.stepsGiven) ? c.steps : o.steps;
+	for (int i = 0; i < o.warmup + steps; ++i)
 	{
 		// One step of each world, in an order that rotates every step: a slow moment of the machine
 		// (another process, a frequency change) lands on all three alike.
@@ -273,7 +280,8 @@ std::string fixed(double value, int decimals)
 
 void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 {
-	std::printf("plugin / stock SI ms per step, side by side (lockstep, %d warm-up + %d timed steps of each world, 60 Hz)\n", o.warmup, o.steps);
+	std::printf("plugin / stock SI ms per step, side by side (lockstep, %d warm-up + %d timed steps of each world unless the scene says otherwise, 60 Hz)\n",
+				o.warmup, o.steps);
 	std::printf("%-24s %7s %4s %10s %10s %7s %13s %7s   %s\n", "scene", "bodies", "it", "stock ms", "sp ms", "ratio", "sp-solver ms", "ratio",
 				"drift at end si / sp / sp-solver (cm)");
 	for (const RatioRow& r : rows)
@@ -317,7 +325,11 @@ int runRatios(int argc, char** argv)
 		const std::string arg = argv[i];
 		const bool hasValue = i + 1 < argc;
 		if (arg == "--ratios") continue;
-		if (arg == "--steps" && hasValue) o.steps = positiveInt(argv[++i], arg);
+		if (arg == "--steps" && hasValue)
+		{
+			o.steps = positiveInt(argv[++i], arg);
+			o.stepsGiven = true;
+		}
 		else if (arg == "--warmup" && hasValue) o.warmup = positiveInt(argv[++i], arg);
 		else if (arg == "--scenes" && hasValue)
 		{
