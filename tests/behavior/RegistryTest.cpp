@@ -26,6 +26,9 @@ Overrides smallInstance(const std::string& scene)
 	if (scene == "card_house") return {{"levels", 2}};
 	if (scene == "ragdoll_pile") return {{"columnsX", 1}, {"columnsZ", 1}, {"layers", 2}};
 	if (scene == "leaning_columns") return {{"columnsX", 1}, {"columnsZ", 1}, {"layers", 6}};
+	if (scene == "boxes_3000") return {{"columnsX", 2}, {"columnsZ", 1}, {"layers", 3}};
+	if (scene == "stack_1000") return {{"pyramid", 2}, {"walls", 1}, {"wallRows", 2}, {"rings", 2}, {"ringCubes", 12}};
+	if (scene == "flat_boxes") return {{"countX", 3}, {"countZ", 2}, {"v0", 2}};
 	return {};
 }
 

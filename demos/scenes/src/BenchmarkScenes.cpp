@@ -1,7 +1,15 @@
-// Layouts after Bullet's BenchmarkDemo and PyBullet's tests, at a size a test can run: leaning_columns
-// (BenchmarkDemo's "3000 boxes" staircases, fewer and shorter), ragdoll_pile (BenchmarkDemo's passive
-// ragdolls, a small grid) and heavy_top_column (PyBullet's column of unit cubes under a 1000x top cube).
-// Written from the published layouts (sizes, offsets, joint limits); the construction is this project's.
+// Layouts after Bullet's BenchmarkDemo and PyBullet's tests: leaning_columns (BenchmarkDemo's "3000
+// boxes" staircases, fewer and shorter), boxes_3000 (the same at the demo's full size), stack_1000
+// (BenchmarkDemo's "1000 stack": a pyramid, three walls and a round tower, 1076 cubes), ragdoll_pile
+// (BenchmarkDemo's passive ragdolls, a small grid), heavy_top_column (PyBullet's column of unit cubes
+// under a 1000x top cube) and flat_boxes (a cost baseline without stacks: one layer of boxes on the
+// ground). Written from the published layouts (sizes, offsets, counts, joint limits); the construction
+// is this project's.
+//
+// App facts: BenchmarkDemo (examples/Benchmarks/BenchmarkDemo.cpp, initPhysics) sets
+// m_numIterations = 5 and SOLVER_ENABLE_FRICTION_DIRECTION_CACHING for its tests 1 to 3 ("3000
+// boxes", "1000 stack", "Ragdolls"); the scenes after them record that as facts["appIterations"] and
+// facts["appFrictionDirectionCaching"], so a benchmark can run the app's own solver settings.
 
 #include "SceneBuild.h"
 #include "SceneCatalog.h"
@@ -11,6 +19,16 @@
 
 namespace scenes
 {
+namespace
+{
+/// The solver settings BenchmarkDemo's initPhysics asks for (tests 1 to 3).
+void recordBenchmarkDemoSettings(SceneContent& content)
+{
+	content.facts["appIterations"] = 5;
+	content.facts["appFrictionDirectionCaching"] = 1;
+}
+}  // namespace
+
 // ---------------------------------------------------------------------------------------------------
 // leaning_columns: BenchmarkDemo's "3000 boxes" (8 x 8 columns of 47 boxes of edge 2 m, layer pitch 3 m,
 // each layer shifted 0.35 m further along -x and -z than the one below, dropped from 1 m gaps) at a
@@ -78,8 +96,24 @@ std::unique_ptr<SceneContent> createLeaningColumns(btDiscreteDynamicsWorld& worl
 	content->facts["expectFalls"] = falls ? 1 : 0;
 	content->facts["initialMeanHeight"] = meanY / double(layers * columnsX * columnsZ);  // m, centres
 	content->facts["restingHeight"] = half;  // m, centre height of a box lying on the ground
+	recordBenchmarkDemoSettings(*content);
 	build::finishScene(*content, !falls);
 	return content;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// boxes_3000: BenchmarkDemo's "3000 boxes" (createTest1) at its own size: 8 x 8 columns of 47 cubes of
+// edge 2 m and 2 kg (3008 bodies), layer pitch 3 m, each layer 0.35 m further along -x and -z, 1 m gaps.
+// The construction and the statics are leaning_columns'; only the defaults differ.
+
+Params boxes3000Params()
+{
+	return withOverrides(leaningColumnsParams(), {{"columnsX", 8}, {"columnsZ", 8}, {"layers", 47}});
+}
+
+std::unique_ptr<SceneContent> createBoxes3000(btDiscreteDynamicsWorld& world, const Params& params)
+{
+	return createLeaningColumns(world, params);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -256,6 +290,7 @@ std::unique_ptr<SceneContent> createRagdollPile(btDiscreteDynamicsWorld& world, 
 	}
 	content->facts["ragdolls"] = index;
 	content->facts["standingHeadHeight"] = (kParts[kHead].centre.y() - ragdollFootY()) * scale;  // m, head centre over the soles
+	recordBenchmarkDemoSettings(*content);
 	build::finishScene(*content, false);
 	return content;
 }
@@ -299,6 +334,190 @@ std::unique_ptr<SceneContent> createHeavyTopColumn(btDiscreteDynamicsWorld& worl
 	content->facts["ratio"] = ratio;
 	content->facts["topMass"] = ratio * mass;  // kg
 	build::finishScene(*content, true);
+	return content;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// stack_1000: BenchmarkDemo's "1000 stack" (createTest2), 1076 cubes of edge 2 m and 1 kg in three
+// groups side by side along x:
+// - a square pyramid of 12 layers (12 x 12 at the bottom up to 1 x 1: 650 cubes), neighbours 1.02 edges
+//   apart (4 cm gaps), each layer centred on the four-cube junctions of the one below;
+// - three walls of 12 rows along z (12 cubes at the bottom up to 1: 78 each), each row shifted half a
+//   cube, the walls 6 m apart along x;
+// - a round tower of 8 rings of 24 cubes on a circle of radius 1.3 * 24 * (edge / 2) / pi (9.93 m),
+//   every cube facing the centre, each ring turned half a cube (pi / 24) against the one below.
+// The demo places the groups at x = -20 (pyramid), -2, 4, 10 (walls) and 25 (tower); here the groups
+// keep the demo's order and distances between footprints but are placed from their sizes, so no
+// instance overlaps. The project's conventions replace the demo's exact touching (walls, rings) and
+// its 4 cm vertical gaps (pyramid): rows rest 10 micrometres deep in the row below and wall neighbours
+// keep 1 mm. Statics: every cube rests centred on four (pyramid) or across two (walls, rings) cubes
+// below, so everything stands.
+
+Params stack1000Params()
+{
+	return {
+		{"pyramid", 12, "-", "layers of the pyramid (0: none; BenchmarkDemo: 12, 650 cubes)"},
+		{"walls", 3, "-", "number of walls (BenchmarkDemo: 3)"},
+		{"wallRows", 12, "-", "rows of each wall, as many cubes in the lowest (BenchmarkDemo: 12, 78 cubes)"},
+		{"rings", 8, "-", "rings of the round tower (0: none; BenchmarkDemo: 8)"},
+		{"ringCubes", 24, "-", "cubes per ring (BenchmarkDemo: 24)"},
+		{"size", 2, "m", "cube edge (BenchmarkDemo: 2)"},
+		{"mass", 1, "kg", "mass of each cube (BenchmarkDemo: 1)"},
+		{"mu", 0.25, "-", "combined friction coefficient of every contact (Bullet's default 0.5 per body: 0.25)"},
+	};
+}
+
+std::unique_ptr<SceneContent> createStack1000(btDiscreteDynamicsWorld& world, const Params& params)
+{
+	const int pyramid = build::countParam(params, "pyramid", 0);
+	const int walls = build::countParam(params, "walls", 0);
+	const int wallRows = build::countParam(params, "wallRows", 1);
+	const int rings = build::countParam(params, "rings", 0);
+	const int ringCubes = build::countParam(params, "ringCubes", 3);
+	const btScalar size = build::positiveParam(params, "size");
+	const btScalar mass = build::positiveParam(params, "mass");
+	const btScalar mu = build::nonNegativeParam(params, "mu");
+	build::require(pyramid + walls + rings > 0, "at least one of pyramid, walls, rings must be > 0");
+	const btScalar half = size / 2;
+	const btScalar radius = btScalar(1.3) * btScalar(ringCubes) * half / SIMD_PI;  // m, BenchmarkDemo's ring radius
+	// Neighbouring cubes of a ring must not touch at their inner corners.
+	build::require(btAtan2(half + btScalar(build::kSideGap), radius - half) < SIMD_PI / btScalar(ringCubes),
+				   "ringCubes too small: neighbouring cubes of a ring would overlap at their inner corners");
+
+	// Footprints along x, in the demo's order, with the demo's clearances (m).
+	const btScalar pyramidPitch = btScalar(1.02) * size + btScalar(1e-4);  // BenchmarkDemo's spacing
+	const btScalar pyramidWidth = pyramid > 0 ? pyramidPitch * btScalar(pyramid - 1) + size : 0;
+	const btScalar wallPitchX = 3 * size;  // walls 6 m apart at the demo's size
+	const btScalar wallsWidth = walls > 0 ? wallPitchX * btScalar(walls - 1) + size : 0;
+	const btScalar towerWidth = rings > 0 ? 2 * (radius + half) : 0;
+	const btScalar clearPyramidWall = btScalar(2.9) * size;  // demo: 5.8 m
+	const btScalar clearWallTower = btScalar(1.5) * size;    // demo: about 3 m
+	const btScalar total = pyramidWidth + clearPyramidWall + wallsWidth + clearWallTower + towerWidth;
+	btScalar left = -total / 2;
+
+	auto content = std::make_unique<SceneContent>(world);
+	build::addGround(*content, total, mu);
+	btCollisionShape* shape = content->addShape(new btBoxShape(btVector3(half, half, half)));
+	int pyramidCubes = 0, wallCubes = 0, towerCubes = 0;
+
+	// The pyramid: layer k is (pyramid - k) x (pyramid - k), centred on the same vertical axis.
+	const btScalar pyramidX = left + pyramidWidth / 2;
+	for (int k = 0; k < pyramid; ++k)
+	{
+		const int n = pyramid - k;
+		const btScalar y = build::columnCentreY(0, half, k);
+		for (int j = 0; j < n; ++j)
+		{
+			for (int i = 0; i < n; ++i)
+			{
+				const btScalar x = pyramidX + pyramidPitch * (btScalar(i) - btScalar(n - 1) / 2);
+				const btScalar z = pyramidPitch * (btScalar(j) - btScalar(n - 1) / 2);
+				btRigidBody* cube = content->addBody(shape, mass, build::at(x, y, z), mu);
+				++pyramidCubes;
+				if (k == pyramid - 1)
+					content->name("pyramidTop", cube);
+			}
+		}
+	}
+	if (pyramid > 0)
+		left += pyramidWidth + clearPyramidWall;
+
+	// The walls: row r has wallRows - r cubes along z, centred, so each rests across two of the row below.
+	const btScalar wallPitchZ = size + btScalar(build::kSideGap);
+	for (int w = 0; w < walls; ++w)
+	{
+		const btScalar x = left + half + wallPitchX * btScalar(w);
+		for (int r = 0; r < wallRows; ++r)
+		{
+			const int n = wallRows - r;
+			const btScalar y = build::columnCentreY(0, half, r);
+			for (int i = 0; i < n; ++i)
+			{
+				btRigidBody* cube = content->addBody(shape, mass, build::at(x, y, wallPitchZ * (btScalar(i) - btScalar(n - 1) / 2)), mu);
+				++wallCubes;
+				if (w == 0 && r == wallRows - 1)
+					content->name("wallTop", cube);
+			}
+		}
+	}
+	if (walls > 0)
+		left += wallsWidth + clearWallTower;
+
+	// The round tower: cube j of ring r at angle (j + r / 2) * 2 pi / ringCubes, facing the centre.
+	const btScalar towerX = left + towerWidth / 2;
+	for (int r = 0; r < rings; ++r)
+	{
+		const btScalar y = build::columnCentreY(0, half, r);
+		for (int j = 0; j < ringCubes; ++j)
+		{
+			const btScalar angle = (btScalar(j) + btScalar(r % 2) / 2) * SIMD_2_PI / btScalar(ringCubes);
+			const btVector3 centre(towerX + radius * btSin(angle), y, radius * btCos(angle));
+			btRigidBody* cube = content->addBody(shape, mass, build::rotatedAt(btVector3(0, 1, 0), angle, centre), mu);
+			++towerCubes;
+			if (r == rings - 1 && j == 0)
+				content->name("towerTop", cube);
+		}
+	}
+
+	content->facts["pyramidCubes"] = pyramidCubes;
+	content->facts["wallCubes"] = wallCubes;
+	content->facts["towerCubes"] = towerCubes;
+	content->facts["ringRadius"] = radius;  // m
+	recordBenchmarkDemoSettings(*content);
+	build::finishScene(*content, true);
+	return content;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// flat_boxes: the cost baseline without stacks: a grid of cubes resting side by side on the ground,
+// one layer, every cube its own island. With v0 > 0 each cube slides along +x and Coulomb friction
+// stops it after v0^2 / (2 mu g); with v0 = 0 nothing moves.
+
+Params flatBoxesParams()
+{
+	return {
+		{"countX", 20, "-", "cubes along x"},
+		{"countZ", 20, "-", "cubes along z"},
+		{"size", 1, "m", "cube edge"},
+		{"gap", 0.5, "m", "gap between neighbouring cubes"},
+		{"v0", 0, "m/s", "initial speed of every cube along +x (0: at rest)"},
+		{"mass", 1, "kg", "mass of each cube"},
+		{"mu", 0.5, "-", build::kMuDescription},
+	};
+}
+
+std::unique_ptr<SceneContent> createFlatBoxes(btDiscreteDynamicsWorld& world, const Params& params)
+{
+	const int countX = build::countParam(params, "countX", 1);
+	const int countZ = build::countParam(params, "countZ", 1);
+	const btScalar size = build::positiveParam(params, "size");
+	const btScalar gap = build::nonNegativeParam(params, "gap");
+	const btScalar v0 = build::nonNegativeParam(params, "v0");
+	const btScalar mass = build::positiveParam(params, "mass");
+	const btScalar mu = build::nonNegativeParam(params, "mu");
+	build::require(gap >= btScalar(build::kSideGap), "gap must be at least 1 mm");
+	const btScalar half = size / 2;
+	const btScalar pitch = size + gap;
+
+	auto content = std::make_unique<SceneContent>(world);
+	// Room for the slide: v0^2 / (2 mu g) at g = 9.81 (any mu > 0.01).
+	const btScalar slide = v0 * v0 / (2 * btMax(mu, btScalar(0.01)) * btScalar(9.81));
+	build::addGround(*content, pitch * btScalar(btMax(countX, countZ)) + slide, mu);
+	btCollisionShape* shape = content->addShape(new btBoxShape(btVector3(half, half, half)));
+	const btScalar y = build::columnCentreY(0, half, 0);
+	for (int j = 0; j < countZ; ++j)
+	{
+		for (int i = 0; i < countX; ++i)
+		{
+			btRigidBody* cube = content->addBody(shape, mass, build::at(pitch * (btScalar(i) - btScalar(countX - 1) / 2), y, pitch * (btScalar(j) - btScalar(countZ - 1) / 2)), mu);
+			cube->setLinearVelocity(btVector3(v0, 0, 0));
+			if (i == 0 && j == 0)
+				content->name("first", cube);
+		}
+	}
+	content->facts["v0"] = v0;
+	content->facts["mu"] = mu;
+	build::finishScene(*content, v0 == 0);
 	return content;
 }
 

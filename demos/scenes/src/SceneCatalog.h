@@ -74,9 +74,15 @@ Params loadedLintelParams();
 std::unique_ptr<SceneContent> createLeaningColumns(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createRagdollPile(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createHeavyTopColumn(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createBoxes3000(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createStack1000(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createFlatBoxes(btDiscreteDynamicsWorld& world, const Params& params);
 Params leaningColumnsParams();
 Params ragdollPileParams();
 Params heavyTopColumnParams();
+Params boxes3000Params();
+Params stack1000Params();
+Params flatBoxesParams();
 
 }  // namespace scenes
 
