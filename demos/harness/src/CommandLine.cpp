@@ -130,8 +130,18 @@ const std::vector<PluginFlag>& pluginFlags()
 				   &btShockPropagationSettings::m_correctionSlop, "slop", [](double m) { return m >= 0 || m == -1; }, ">= 0 metres"),
 		switchFlag("--bfs-layers", "plugin: plain BFS layers, no support ordering (D12 off)", &btShockPropagationSettings::m_supportOrdering,
 				   false, "bfs"),
-		numberFlag("--weight-sweeps", "N,...", "plugin: sweeps per layer of the weight pass (default: the app's iterations; D16)",
+		numberFlag("--weight-sweeps", "N,...", "plugin: most sweeps per layer of the weight pass (default: 3 x the app's iterations; D16)",
 				   &btShockPropagationSettings::m_weightIterations, "sweeps", [](double n) { return n >= 1; }, ">= 1"),
+		switchFlag("--no-transfer", "plugin: no load transfer before the weight pass's sweeps (D16 off)",
+				   &btShockPropagationSettings::m_loadTransfer, false, "notransfer"),
+		numberFlag("--warm-factor", "W,...", "plugin: warm-start factor of stacked groups, -1 = the app's (default 1; D16)",
+				   &btShockPropagationSettings::m_warmStartFactor, "warm", [](double w) { return (w >= 0 && w <= 1) || w == -1; }, "in [0, 1] or -1"),
+		numberFlag("--tip-gain", "G,...", "plugin: weight-pass guard, steps of free fall a converged re-solve may add (default 3; D16)",
+				   &btShockPropagationSettings::m_weightGuardTipping, "tip", [](double g) { return g >= 0; }, ">= 0"),
+		numberFlag("--guard-slack", "S,...", "plugin: weight-pass guard slack, share of |g| dt (default 0.1; D16)",
+				   &btShockPropagationSettings::m_weightGuardSlack, "slack", [](double g) { return g >= 0; }, ">= 0"),
+		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
+				   &btShockPropagationSettings::m_secondCorrection, true, "secondcorr"),
 	};
 	return table;
 }
