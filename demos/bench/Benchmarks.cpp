@@ -152,7 +152,7 @@ void graphAndLayers(benchmark::State& state, const std::string& scene)
 		// The plugin's own edge rule and support test (btContactGraph::addManifold), then the layers.
 		graph.reset(list.numBodies);
 		for (size_t i = 0; i < list.entries.size(); ++i)
-			graph.addManifold(list.entries[i].manifold, list.entries[i].nodeA, list.entries[i].nodeB, int(i), up, settings.m_supportAngle);
+			graph.addManifold(list.entries[i].manifold, list.entries[i].nodeA, list.entries[i].nodeB, int(i), up, settings.m_diagnostics.m_supportAngle);
 		graph.buildAdjacency();
 		layers.build(graph);
 		benchmark::DoNotOptimize(layers.getNumLayers());

@@ -64,7 +64,7 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 			}
 			const btScalar depth = -distance - slop;
 			if (!(depth > btScalar(0))) continue;
-			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, m_settings.m_correctionFraction * depth,
+			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, m_settings.m_diagnostics.m_correctionFraction * depth,
 								   m_layers.getEdgeLayer(edge));
 		}
 	}
@@ -87,7 +87,7 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 	m_bodies.resize(kept);
 	buildGraph();
 	// Only stacked components are corrected (groups without stacks were Bullet's own solve).
-	bool anyStack = m_layers.getNumLayers() > 1 || m_settings.m_layerFlatGroups;
+	bool anyStack = m_layers.getNumLayers() > 1 || m_settings.m_diagnostics.m_layerFlatGroups;
 	if (anyStack)
 	{
 		btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
@@ -104,7 +104,7 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 			if (edge < 0) continue;
 			const btContactGraphEdge& e = m_graph.getEdge(edge);
 			const int node = e.m_bodyA >= 0 ? e.m_bodyA : e.m_bodyB;
-			if (!m_settings.m_layerFlatGroups && tallest[m_layers.getComponent(node)] <= 1) continue;
+			if (!m_settings.m_diagnostics.m_layerFlatGroups && tallest[m_layers.getComponent(node)] <= 1) continue;
 			m_manifolds[keptManifolds] = m_manifolds[i];
 			keptEdges.push_back(edge);
 			++keptManifolds;
@@ -112,7 +112,7 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 		m_manifolds.resize(keptManifolds);
 		m_edgeOfManifold.resize(keptManifolds);
 		for (int i = 0; i < keptManifolds; ++i) m_edgeOfManifold[i] = keptEdges[i];
-		correctPositions(info, true, m_settings.m_layeredSecondCorrection);
+		correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection);
 	}
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }

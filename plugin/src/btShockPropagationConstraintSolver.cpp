@@ -69,18 +69,18 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	m_settings.m_globalIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_globalIterations);
 	m_settings.m_layerIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_layerIterations);
 	m_settings.m_correctionIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_correctionIterations);
-	if (!(settings.m_correctionFraction >= 0 && settings.m_correctionFraction <= 1)) m_settings.m_correctionFraction = defaults.m_correctionFraction;
+	if (!(settings.m_diagnostics.m_correctionFraction >= 0 && settings.m_diagnostics.m_correctionFraction <= 1)) m_settings.m_diagnostics.m_correctionFraction = defaults.m_diagnostics.m_correctionFraction;
 	if (!isFiniteScalar(settings.m_correctionSlop)) m_settings.m_correctionSlop = defaults.m_correctionSlop;
 	if (!(settings.m_correctionSlopPerFall >= 0) || !isFiniteScalar(settings.m_correctionSlopPerFall))
 		m_settings.m_correctionSlopPerFall = defaults.m_correctionSlopPerFall;
 	m_settings.m_weightIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_weightIterations);
-	if (!(settings.m_weightConvergence >= 0) || !isFiniteScalar(settings.m_weightConvergence)) m_settings.m_weightConvergence = defaults.m_weightConvergence;
-	if (!(settings.m_warmStartFactor <= 1) || !isFiniteScalar(settings.m_warmStartFactor)) m_settings.m_warmStartFactor = defaults.m_warmStartFactor;
-	if (!isFiniteScalar(settings.m_supportAngle)) m_settings.m_supportAngle = defaults.m_supportAngle;
-	if (!(settings.m_warmStartCoupling >= 0 && settings.m_warmStartCoupling <= 1)) m_settings.m_warmStartCoupling = defaults.m_warmStartCoupling;
-	if (!(settings.m_warmStartWeights >= 0)) m_settings.m_warmStartWeights = defaults.m_warmStartWeights;
-	if (!(settings.m_weightGuardSlack >= 0) || !isFiniteScalar(settings.m_weightGuardSlack)) m_settings.m_weightGuardSlack = defaults.m_weightGuardSlack;
-	if (!(settings.m_weightGuardTipping >= 0) || !isFiniteScalar(settings.m_weightGuardTipping)) m_settings.m_weightGuardTipping = defaults.m_weightGuardTipping;
+	if (!(settings.m_diagnostics.m_weightConvergence >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightConvergence)) m_settings.m_diagnostics.m_weightConvergence = defaults.m_diagnostics.m_weightConvergence;
+	if (!(settings.m_diagnostics.m_warmStartFactor <= 1) || !isFiniteScalar(settings.m_diagnostics.m_warmStartFactor)) m_settings.m_diagnostics.m_warmStartFactor = defaults.m_diagnostics.m_warmStartFactor;
+	if (!isFiniteScalar(settings.m_diagnostics.m_supportAngle)) m_settings.m_diagnostics.m_supportAngle = defaults.m_diagnostics.m_supportAngle;
+	if (!(settings.m_diagnostics.m_warmStartCoupling >= 0 && settings.m_diagnostics.m_warmStartCoupling <= 1)) m_settings.m_diagnostics.m_warmStartCoupling = defaults.m_diagnostics.m_warmStartCoupling;
+	if (!(settings.m_diagnostics.m_warmStartWeights >= 0)) m_settings.m_diagnostics.m_warmStartWeights = defaults.m_diagnostics.m_warmStartWeights;
+	if (!(settings.m_diagnostics.m_weightGuardSlack >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightGuardSlack)) m_settings.m_diagnostics.m_weightGuardSlack = defaults.m_diagnostics.m_weightGuardSlack;
+	if (!(settings.m_diagnostics.m_weightGuardTipping >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightGuardTipping)) m_settings.m_diagnostics.m_weightGuardTipping = defaults.m_diagnostics.m_weightGuardTipping;
 }
 
 int btShockPropagationConstraintSolver::sweepCount(int setting, int worldIterations) const
@@ -131,7 +131,7 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 	m_stats.m_largestLayer = btMax(m_stats.m_largestLayer, m_layers.getLargestLayer());
 	m_stats.m_timeGraphMs += millisecondsSince(clock);
 
-	if ((numLayers <= 1 && !m_settings.m_layerFlatGroups) || m_bodies.size() == 0)
+	if ((numLayers <= 1 && !m_settings.m_diagnostics.m_layerFlatGroups) || m_bodies.size() == 0)
 	{
 		// No stacks: Bullet's own solve of the group, with the app's settings (D9). The warm start
 		// limit (D5) holds here too: a group that was layered last step may have left impulses
@@ -202,8 +202,8 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	btContactSolverInfo stepInfo = info;
 	stepInfo.m_erp2 = btScalar(0);
 	stepInfo.m_splitImpulse = false;
-	if (m_settings.m_weightFeeling && m_settings.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_warmStartFactor;  // D16
-	if (m_settings.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+	if (m_settings.m_weightFeeling && m_settings.m_diagnostics.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_diagnostics.m_warmStartFactor;  // D16
+	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	limitWarmStart(info);
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
@@ -221,7 +221,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	// D5: the warm start is the state last step ended in: a lower body feels only the share of a
 	// contact's impulse it felt then.
 	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING)
-		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_warmStartCoupling);
+		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_diagnostics.m_warmStartCoupling);
 	m_stats.m_timeGraphMs += millisecondsSince(clock);
 
 	// Global pass: Bullet's own sweeps over every row, every body free; the app's residual
@@ -243,7 +243,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	params.m_mode = m_settings.m_fixationMode;
 	params.m_sor = info.m_sor;
 	params.m_jointDamping = info.m_damping;
-	params.m_inelasticFixation = m_settings.m_inelasticFixation;
+	params.m_inelasticFixation = m_settings.m_diagnostics.m_inelasticFixation;
 	const bool weightFeeling = m_settings.m_weightFeeling;
 	// Joints with more iterations than the app's (btTypedConstraint::setOverrideNumSolverIterations)
 	// get them, as in a stock solve: their rows are in layer 0.
@@ -255,11 +255,11 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		clock.reset();
 		// The guard's scales (D16), per body and per step: shares of the speed gravity gives in one step.
 		btWeightPassParams weight;
-		weight.m_transfer = m_settings.m_loadTransfer;
+		weight.m_transfer = m_settings.m_diagnostics.m_loadTransfer;
 		weight.m_timeStep = info.m_timeStep;
-		weight.m_slack = m_settings.m_weightGuardSlack;
-		weight.m_tipGain = m_settings.m_weightGuardTipping;
-		weight.m_convergedSpeed = m_settings.m_weightConvergence * largestGravity() * info.m_timeStep;
+		weight.m_slack = m_settings.m_diagnostics.m_weightGuardSlack;
+		weight.m_tipGain = m_settings.m_diagnostics.m_weightGuardTipping;
+		weight.m_convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
@@ -310,7 +310,7 @@ void btShockPropagationConstraintSolver::limitWarmStart(const btContactSolverInf
 			if (rb && rb->getInvMass() > btScalar(0) && g > btScalar(0)) lighter = btMin(lighter, g / rb->getInvMass());
 		}
 		if (!(lighter < SIMD_INFINITY)) continue;
-		const btScalar cap = m_settings.m_warmStartWeights * lighter * dt;
+		const btScalar cap = m_settings.m_diagnostics.m_warmStartWeights * lighter * dt;
 		if (!(cap > btScalar(0))) continue;
 		for (int j = 0; j < m->getNumContacts(); ++j)
 		{

@@ -73,8 +73,8 @@ void btShockPropagationConstraintSolver::buildGraph()
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{
 		const btPersistentManifold* m = m_manifolds[i];
-		const btVector3 up = m_settings.m_supportOrdering ? upOf(m) : btVector3(0, 0, 0);
-		m_edgeOfManifold[i] = m_graph.addManifold(m, nodeOf(m->getBody0()), nodeOf(m->getBody1()), i, up, m_settings.m_supportAngle);
+		const btVector3 up = m_settings.m_diagnostics.m_supportOrdering ? upOf(m) : btVector3(0, 0, 0);
+		m_edgeOfManifold[i] = m_graph.addManifold(m, nodeOf(m->getBody0()), nodeOf(m->getBody1()), i, up, m_settings.m_diagnostics.m_supportAngle);
 	}
 	// D8: joints are no edges. Fixating one end of a joint against the other clamps every body of
 	// a closed chain (a bridge anchored at both ends) between two fixated neighbours, which fight

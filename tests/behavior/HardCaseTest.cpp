@@ -192,7 +192,7 @@ TEST(HardCaseShock, BfsLayersWithoutSupportOrderingJamTheDoor)
 	// anyway and the door holds even without the ordering (measured 0.5 cm in 2 s).
 	harness::Trial run(spec::classic(), "door");
 	btShockPropagationSettings settings = run.simulation().shockSolver()->getSettings();
-	settings.m_supportOrdering = false;
+	settings.m_diagnostics.m_supportOrdering = false;
 	run.simulation().shockSolver()->setSettings(settings);
 	run.run(2.0);
 	EXPECT_GT(run.maxDrift(), 0.05) << "m: expected the BFS-only layering to lose the door";

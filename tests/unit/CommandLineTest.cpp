@@ -89,7 +89,7 @@ TEST(CommandLine, PluginFlagsSetSettingsAndExpandEveryCombination)
 	for (const btShockPropagationSettings& s : all)
 	{
 		EXPECT_EQ(s.m_fixationMode, BT_FIXATION_KEEP_VELOCITY);
-		EXPECT_FALSE(s.m_supportOrdering);
+		EXPECT_FALSE(s.m_diagnostics.m_supportOrdering);
 	}
 	EXPECT_EQ(harness::pluginSettingsLabel(all[1]), " f=0 fix=keep slop=0.001 bfs");
 	EXPECT_EQ(harness::pluginSettingsLabel(btShockPropagationSettings()), " f=0.5") << "defaults: f only";

@@ -78,29 +78,47 @@ struct PluginFlag
 	std::function<std::string(const btShockPropagationSettings&)> show;
 };
 
-/// A switch that sets a bool field to `value`; labelled `label` when it does.
-PluginFlag switchFlag(const char* flag, const char* help, bool btShockPropagationSettings::*field, bool value, const char* label)
+/// Where a flag's field is: a member of the settings, or of their diagnostics (m_diagnostics).
+template <class T>
+using FieldOf = std::function<T&(btShockPropagationSettings&)>;
+template <class T>
+FieldOf<T> field(T btShockPropagationSettings::*member)
 {
-	return {flag, nullptr, help, false, [=](btShockPropagationSettings& s, const std::string&) { s.*field = value; },
-			[=](const btShockPropagationSettings& s) { return std::string(s.*field == value ? label : ""); }};
+	return [member](btShockPropagationSettings& s) -> T& { return s.*member; };
+}
+template <class T>
+FieldOf<T> diagnostic(T btShockPropagationDiagnostics::*member)
+{
+	return [member](btShockPropagationSettings& s) -> T& { return s.m_diagnostics.*member; };
+}
+
+/// A switch that sets a bool field to `value`; labelled `label` when it does.
+PluginFlag switchFlag(const char* flag, const char* help, FieldOf<bool> at, bool value, const char* label)
+{
+	return {flag, nullptr, help, false, [=](btShockPropagationSettings& s, const std::string&) { at(s) = value; },
+			[=](const btShockPropagationSettings& s) {
+				btShockPropagationSettings copy = s;
+				return std::string(at(copy) == value ? label : "");
+			}};
 }
 
 /// A numeric field (whole numbers for an int field) whose values pass `valid` (described by
 /// `range`); labelled "key=value".
 template <class T>
-PluginFlag numberFlag(const char* flag, const char* value, const char* help, T btShockPropagationSettings::*field, const char* key,
-					  bool (*valid)(double), const char* range, bool alwaysInLabel = false)
+PluginFlag numberFlag(const char* flag, const char* value, const char* help, FieldOf<T> at, const char* key, bool (*valid)(double),
+					  const char* range, bool alwaysInLabel = false)
 {
 	const std::string name = flag;
 	return {flag, value, help, alwaysInLabel,
 			[=](btShockPropagationSettings& s, const std::string& text) {
 				const double v = std::is_integral<T>::value ? double(parseInteger(text)) : parseNumber(text);
 				if (!valid(v)) throw std::invalid_argument(name + " values must be " + range + ", got '" + text + "'");
-				s.*field = T(v);
+				at(s) = T(v);
 			},
 			[=](const btShockPropagationSettings& s) {
+				btShockPropagationSettings copy = s;
 				std::ostringstream out;
-				out << key << "=" << s.*field;
+				out << key << "=" << at(copy);
 				return out.str();
 			}};
 }
@@ -111,7 +129,7 @@ const char* const kFixationNames[] = {"keep", "zero", "linear", "twist"};  // by
 const std::vector<PluginFlag>& pluginFlags()
 {
 	static const std::vector<PluginFlag> table = {
-		numberFlag("--f", "F,G,...", "plugin weighting values f in [0,1] (default 0.5; D2)", &btShockPropagationSettings::m_weighting, "f",
+		numberFlag("--f", "F,G,...", "plugin weighting values f in [0,1] (default 0.5; D2)", field(&btShockPropagationSettings::m_weighting), "f",
 				   [](double f) { return f >= 0 && f <= 1; }, "in [0, 1]", true),
 		{"--fixation", "MODE,...", "plugin fixation: twist (default), linear, keep, zero (D1)", false,
 		 [](btShockPropagationSettings& s, const std::string& text) {
@@ -125,23 +143,23 @@ const std::vector<PluginFlag>& pluginFlags()
 		 },
 		 [](const btShockPropagationSettings& s) { return std::string("fix=") + kFixationNames[s.m_fixationMode]; }},
 		switchFlag("--global-correction", "plugin: the paper's un-layered second correction (D4)",
-				   &btShockPropagationSettings::m_layeredSecondCorrection, false, "globalcorr"),
+				   diagnostic(&btShockPropagationDiagnostics::m_layeredSecondCorrection), false, "globalcorr"),
 		numberFlag("--slop", "M,N,...", "plugin: correction slop values in metres (default: 0.18 g dt^2; D6)",
-				   &btShockPropagationSettings::m_correctionSlop, "slop", [](double m) { return m >= 0 || m == -1; }, ">= 0 metres"),
-		switchFlag("--bfs-layers", "plugin: plain BFS layers, no support ordering (D12 off)", &btShockPropagationSettings::m_supportOrdering,
+				   field(&btShockPropagationSettings::m_correctionSlop), "slop", [](double m) { return m >= 0 || m == -1; }, ">= 0 metres"),
+		switchFlag("--bfs-layers", "plugin: plain BFS layers, no support ordering (D12 off)", diagnostic(&btShockPropagationDiagnostics::m_supportOrdering),
 				   false, "bfs"),
 		numberFlag("--weight-sweeps", "N,...", "plugin: most sweeps per layer of the weight pass (default: 3 x the app's iterations; D16)",
-				   &btShockPropagationSettings::m_weightIterations, "sweeps", [](double n) { return n >= 1; }, ">= 1"),
+				   field(&btShockPropagationSettings::m_weightIterations), "sweeps", [](double n) { return n >= 1; }, ">= 1"),
 		switchFlag("--no-transfer", "plugin: no load transfer before the weight pass's sweeps (D16 off)",
-				   &btShockPropagationSettings::m_loadTransfer, false, "notransfer"),
+				   diagnostic(&btShockPropagationDiagnostics::m_loadTransfer), false, "notransfer"),
 		numberFlag("--warm-factor", "W,...", "plugin: warm-start factor of stacked groups, -1 = the app's (default 1; D16)",
-				   &btShockPropagationSettings::m_warmStartFactor, "warm", [](double w) { return (w >= 0 && w <= 1) || w == -1; }, "in [0, 1] or -1"),
+				   diagnostic(&btShockPropagationDiagnostics::m_warmStartFactor), "warm", [](double w) { return (w >= 0 && w <= 1) || w == -1; }, "in [0, 1] or -1"),
 		numberFlag("--tip-gain", "G,...", "plugin: weight-pass guard, steps of free fall a converged re-solve may add (default 3; D16)",
-				   &btShockPropagationSettings::m_weightGuardTipping, "tip", [](double g) { return g >= 0; }, ">= 0"),
+				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipping), "tip", [](double g) { return g >= 0; }, ">= 0"),
 		numberFlag("--guard-slack", "S,...", "plugin: weight-pass guard slack, share of |g| dt (default 0.1; D16)",
-				   &btShockPropagationSettings::m_weightGuardSlack, "slack", [](double g) { return g >= 0; }, ">= 0"),
+				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardSlack), "slack", [](double g) { return g >= 0; }, ">= 0"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
-				   &btShockPropagationSettings::m_secondCorrection, true, "secondcorr"),
+				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
 	};
 	return table;
 }

@@ -43,49 +43,15 @@ enum btShockPropagationFixationMode
 	BT_FIXATION_KEEP_LINEAR_AND_TWIST = 3
 };
 
-/// Every tunable of the plugin, with its default, unit and reason. Defaults are set here only.
-///
-/// What comes from the app (btContactSolverInfo of the world, read at every step): the time
-/// step, m_numIterations (the sweep counts below follow it by default), the residual threshold
-/// (ends the global pass early), warm starting and its factor, SOR, joint ERP/CFM, restitution
-/// and friction settings, m_solverMode. Bullet's rows are set up once per step with the app's
-/// time step exactly as a stock step sets them up, and finished once (D15). Replaced while the
-/// plugin solves a stacked group: Baumgarte on contacts (m_erp2) and split impulse, by the
-/// position correction (D6). Groups without stacks are solved by Bullet's own solver, unchanged.
-struct btShockPropagationSettings
+/// Switches and constants that exist to reproduce the measurements behind the design decisions
+/// (ablations: turn a decision off and see what it was for) and the guards' scales. Each is set
+/// to the value docs/design.md measured; apps are not expected to change them.
+struct btShockPropagationDiagnostics
 {
-	/// Weighting value f in [0, 1] (unitless): the share of the app's sweeps spent on the global
-	/// pass, where every body is free, before the layers are solved bottom-up with the lower
-	/// bodies fixated. The global pass lets the lower bodies feel the weight of the upper ones;
-	/// the layered pass makes the stack rigid. f = 0 skips the global pass (Erleben's classic
-	/// method, the paper's f). Default 0.5 (D2, measured in docs/design.md).
-	btScalar m_weighting = btScalar(0.5);
-
-	/// PGS sweeps of the global pass (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default):
-	/// ceil(f * m_numIterations) of the world's solver info, at least 1 when f > 0 (D7).
-	int m_globalIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
-	/// PGS sweeps of each layer (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's
-	/// m_numIterations. A layer is one contact deep, so its sweeps converge it where a whole
-	/// stack would need O(n^2); each row is in one layer, so the layered pass costs about one
-	/// stock solve (D7).
-	int m_layerIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
-	/// Projected Gauss-Seidel sweeps of each position correction (count).
-	/// BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's m_numIterations.
-	int m_correctionIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
-
-	/// World mode: after the positions advance, correct the penetration of the step's contacts
-	/// again, at their depths at t + dt ("anti-rippling", the paper's second correction). Depths
-	/// are recomputed from the bodies' new transforms and the contact points' local anchors (as
-	/// Bullet's refreshContactPoints does), without a second narrowphase (D4).
-	bool m_secondCorrection = false;
-
 	/// Solve the second correction layer by layer (bottom-up, lower bodies fixated) instead of as
 	/// one global projection with every body free (the paper's form, which squeezes mass-ratio
 	/// stacks apart at 10 sweeps; D4).
 	bool m_layeredSecondCorrection = true;
-
-	/// See btShockPropagationFixationMode (D1).
-	btShockPropagationFixationMode m_fixationMode = BT_FIXATION_KEEP_LINEAR_AND_TWIST;
 
 	/// D14 (beyond the paper): a fixated body that moves into a free one above it pushes it at most
 	/// at the common velocity of an inelastic collision of the two (row effective masses), not at
@@ -94,24 +60,9 @@ struct btShockPropagationSettings
 	/// a 2.7 g box squeezed under a 331 t one threw it at 4 m/s; docs/design.md).
 	bool m_inelasticFixation = true;
 
-	/// Unused since the one-setup step: the contact graph takes every manifold point Bullet
-	/// makes a row of (D8, btContactGraph::isContactEdge). Kept so earlier code compiles.
-	btScalar m_graphContactThreshold = btScalar(0.02);
-
 	/// Fraction (unitless, 0..1] of each measured penetration removed by a correction. 1 removes
 	/// all of it, as OpenTissue's correction() does (erp = 1).
 	btScalar m_correctionFraction = btScalar(1);
-
-	/// Penetration left in place by corrections (metres). Negative (default): scaled from the
-	/// world, m_correctionSlopPerFall * |g| dt^2 (0.5 mm at 9.81 m/s^2 and 60 Hz). 0 is
-	/// OpenTissue's choice; in Bullet it leaves resting boxes at zero distance, where the box-box
-	/// test may report no contact, so the next step sees a gap and the body falls into it again.
-	btScalar m_correctionSlop = btScalar(-1);
-
-	/// The derived slop as a share of the distance a body falls from rest in one step, |g| dt^2
-	/// (unitless). 0.18 gives the 0.5 mm measured at 60 Hz (docs/design.md, D6), and scales with
-	/// the world's units and rate.
-	btScalar m_correctionSlopPerFall = btScalar(0.18);
 
 	/// Two friction rows per contact point (a four-sided friction pyramid) in stacked groups,
 	/// instead of Bullet's default one velocity-aligned row. Bullet's single row lets towers creep
@@ -128,13 +79,6 @@ struct btShockPropagationSettings
 	/// -gravity) is put above it. Off: Erleben's plain BFS layers, which clamp the top box of the
 	/// taller column of a door between two fixated bodies (D12).
 	bool m_supportOrdering = true;
-
-	/// Unused since the one-setup step (D11 is gone: speculative contacts are set up with the
-	/// step's own time step, so the dynamics no longer misses contacts it must stop at).
-	bool m_correctionStopsApproach = false;
-
-	/// Unused since the one-setup step (D11). Kept so earlier code compiles (m/s).
-	btScalar m_correctionApproachSpeed = btScalar(0.25);
 
 	/// Largest angle (radians) between a contact normal and the up direction for which the
 	/// contact counts as support; steeper contacts are side contacts. 1.0472 = 60 degrees.
@@ -156,20 +100,6 @@ struct btShockPropagationSettings
 	/// 40: 0.89 cm in 10 s). Measured window (docs/design.md): 0.15 does not tip the seesaw within
 	/// 4 s, 0.25 lets the 9,870-box pyramid creep from 8 s; 0.2 does neither.
 	btScalar m_warmStartCoupling = btScalar(0.2);
-
-	/// Weight feeling (D13, D16; in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
-	/// 2025): after the bottom-up layer pass, a top-down pass hands each layer's impulses, which
-	/// fixation withheld from the bodies below, to those bodies, whose support rows take the load
-	/// on (m_loadTransfer) before their layer is re-solved. The ground carries the whole stack,
-	/// friction capacity is that of the whole weight, and a load past a support's edge tips it.
-	/// Default on; off gives Erleben's classic method (lower bodies never feel the upper ones).
-	bool m_weightFeeling = true;
-
-	/// Most PGS sweeps of each layer's re-solve in the weight pass (count); a layer stops as soon as
-	/// it has converged (m_weightConvergence). BT_SHOCK_ITERATIONS_FROM_WORLD (default): 3 times the
-	/// world's m_numIterations. A load past a support's edge takes more sweeps to settle than a
-	/// carried one: at 10, the guard held BenchmarkDemo's leaning columns up (D16, measured).
-	int m_weightIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
 
 	/// D16: before its layer's re-solve, a body's support rows take the load handed down to it in
 	/// one least-squares step (btLoadTransfer), instead of sweep by sweep. Without it the share
@@ -205,6 +135,78 @@ struct btShockPropagationSettings
 	/// without stacks, and the classic method (m_weightFeeling off), use the app's. Warm starting
 	/// off in the app stays off.
 	btScalar m_warmStartFactor = btScalar(1);
+};
+
+/// What users tune, with its default, unit and reason (the diagnostics switches are in
+/// m_diagnostics). Defaults are set here only.
+///
+/// What comes from the app (btContactSolverInfo of the world, read at every step): the time
+/// step, m_numIterations (the sweep counts below follow it by default), the residual threshold
+/// (ends the global pass early), warm starting and its factor, SOR, joint ERP/CFM, restitution
+/// and friction settings, m_solverMode. Bullet's rows are set up once per step with the app's
+/// time step exactly as a stock step sets them up, and finished once (D15). Replaced while the
+/// plugin solves a stacked group: Baumgarte on contacts (m_erp2) and split impulse, by the
+/// position correction (D6). Groups without stacks are solved by Bullet's own solver, unchanged.
+struct btShockPropagationSettings
+{
+	/// Weighting value f in [0, 1] (unitless): the share of the app's sweeps spent on the global
+	/// pass, where every body is free, before the layers are solved bottom-up with the lower
+	/// bodies fixated. The global pass lets the lower bodies feel the weight of the upper ones;
+	/// the layered pass makes the stack rigid. f = 0 skips the global pass (Erleben's classic
+	/// method, the paper's f). Default 0.5 (D2, measured in docs/design.md).
+	btScalar m_weighting = btScalar(0.5);
+
+	/// PGS sweeps of the global pass (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default):
+	/// ceil(f * m_numIterations) of the world's solver info, at least 1 when f > 0 (D7).
+	int m_globalIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+
+	/// PGS sweeps of each layer (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's
+	/// m_numIterations. A layer is one contact deep, so its sweeps converge it where a whole
+	/// stack would need O(n^2); each row is in one layer, so the layered pass costs about one
+	/// stock solve (D7).
+	int m_layerIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+
+	/// Projected Gauss-Seidel sweeps of each position correction (count).
+	/// BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's m_numIterations.
+	int m_correctionIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+
+	/// World mode: after the positions advance, correct the penetration of the step's contacts
+	/// again, at their depths at t + dt ("anti-rippling", the paper's second correction). Depths
+	/// are recomputed from the bodies' new transforms and the contact points' local anchors (as
+	/// Bullet's refreshContactPoints does), without a second narrowphase (D4).
+	bool m_secondCorrection = false;
+
+	/// See btShockPropagationFixationMode (D1).
+	btShockPropagationFixationMode m_fixationMode = BT_FIXATION_KEEP_LINEAR_AND_TWIST;
+
+	/// Penetration left in place by corrections (metres). Negative (default): scaled from the
+	/// world, m_correctionSlopPerFall * |g| dt^2 (0.5 mm at 9.81 m/s^2 and 60 Hz). 0 is
+	/// OpenTissue's choice; in Bullet it leaves resting boxes at zero distance, where the box-box
+	/// test may report no contact, so the next step sees a gap and the body falls into it again.
+	btScalar m_correctionSlop = btScalar(-1);
+
+	/// The derived slop as a share of the distance a body falls from rest in one step, |g| dt^2
+	/// (unitless). 0.18 gives the 0.5 mm measured at 60 Hz (docs/design.md, D6), and scales with
+	/// the world's units and rate.
+	btScalar m_correctionSlopPerFall = btScalar(0.18);
+
+	/// Weight feeling (D13, D16; in the spirit of Xiong et al., "Two-Pass Shock Propagation", SCA
+	/// 2025): after the bottom-up layer pass, a top-down pass hands each layer's impulses, which
+	/// fixation withheld from the bodies below, to those bodies, whose support rows take the load
+	/// on (m_loadTransfer) before their layer is re-solved. The ground carries the whole stack,
+	/// friction capacity is that of the whole weight, and a load past a support's edge tips it.
+	/// Default on; off gives Erleben's classic method (lower bodies never feel the upper ones).
+	bool m_weightFeeling = true;
+
+	/// Most PGS sweeps of each layer's re-solve in the weight pass (count); a layer stops as soon as
+	/// it has converged (m_weightConvergence). BT_SHOCK_ITERATIONS_FROM_WORLD (default): 3 times the
+	/// world's m_numIterations. A load past a support's edge takes more sweeps to settle than a
+	/// carried one: at 10, the guard held BenchmarkDemo's leaning columns up (D16, measured).
+	int m_weightIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+
+	/// Ablation switches and guard scales (see btShockPropagationDiagnostics); leave as they are
+	/// unless reproducing docs/design.md.
+	btShockPropagationDiagnostics m_diagnostics;
 };
 
 #endif  // BT_SHOCK_PROPAGATION_SETTINGS_H
