@@ -106,13 +106,13 @@ void btLayeredPasses::markFixated(int layer, char value)
 	}
 }
 
-void btLayeredPasses::withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse)
+void btLayeredPasses::withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse, bool normal)
 {
 	// J_F^T impulse on the fixated end F, kept for it instead of applied.
 	const int node = m_nodeOfSolverBody[sideA ? row.m_solverBodyIdA : row.m_solverBodyIdB];
 	if (node < 0) return;
 	m_withheld.add(node, (sideA ? row.m_contactNormal1 : row.m_contactNormal2) * impulse,
-				   (sideA ? row.m_relpos1CrossNormal : row.m_relpos2CrossNormal) * impulse);
+				   (sideA ? row.m_relpos1CrossNormal : row.m_relpos2CrossNormal) * impulse, normal);
 }
 
 template <class Visit>
@@ -178,7 +178,7 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
 		if (!withhold || change == btScalar(0)) return;
 		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
-		withholdFromFixated(c, fixA, change);
+		withholdFromFixated(c, fixA, change, kind == BT_ROW_CONTACT);
 		if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
 		{
 			// How fast the free end pressed on the fixated one at setup (m/s along the normal):
@@ -268,7 +268,7 @@ void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScal
 			btSolverBody& body = pools.m_bodies[id];
 			if (fixA) body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, -unfelt);
 			else body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, -unfelt);
-			withholdFromFixated(c, fixA, unfelt);
+			withholdFromFixated(c, fixA, unfelt, true);
 			m_withheld.holdBack(rowIndex, unfelt);
 		}
 		markFixated(layer, 0);
@@ -327,6 +327,9 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			m_before[i].m_deltaLinear = b.internalGetDeltaLinearVelocity();
 			m_before[i].m_deltaAngular = b.internalGetDeltaAngularVelocity();
 		}
+		// Statics first (D16): does the load handed to each body act outside its support?
+		m_tips.resize(numFree);
+		for (int i = 0; i < numFree; ++i) m_tips[i] = weight.m_tipGain > btScalar(0) && loadOutsideSupport(k, m_layers->getFreeBody(k, i), pools, weight.m_timeStep, weight.m_tipMargin);
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
 		fixate(k, params, pools);
 		if (weight.m_transfer) transferLoads(k, pools);
@@ -349,9 +352,9 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		// D16 guard. A load handed down cannot push a body faster than the bodies that pressed it
 		// on it moved towards it (an inelastic push), plus the slack. A re-solve that leaves a
 		// free body's centre of mass faster than that could not carry its load within its sweeps;
-		// unless it converged and the gain stays within m_tipGain steps of free fall: a body
-		// tipping under a load past its support's edge (measured: BenchmarkDemo's leaning
-		// columns gain up to 6, the hostile worlds' mass-ratio blow-ups 18 to 4e5).
+		// unless statics says the body must tip (its weight and load act outside its support), the
+		// re-solve converged, the gain stays within m_tipGain steps of free fall and the body
+		// pivots rather than sinks.
 		const bool converged = lastChange <= converged2;
 		bool anyRejected = false;
 		for (int i = 0; i < numFree; ++i)
@@ -365,9 +368,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
 			const btScalar before = (base + m_before[i].m_deltaLinear).length();
 			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
-			// Not carried: unless it converged and the gain stays within m_tipGain steps of free
-			// fall (a body tipping under a load past its support's edge).
-			if (converged && after <= before + weight.m_tipGain * fall)
+			if (m_tips[i] && converged && after <= before + weight.m_tipGain * fall)
 			{
 				// Tipping pivots a body on its support; a body pressed down into what is below it
 				// has not carried its load.
@@ -376,7 +377,6 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 				if (sink <= weight.m_slack * fall) continue;
 			}
 			anyRejected = true;
-			break;
 		}
 		if (anyRejected)
 		{
@@ -460,3 +460,98 @@ void btLayeredPasses::transferLoads(int layer, const btSolverPools& pools)
 	}
 }
 
+
+bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin)
+{
+	// The body's weight and the load withheld for it (an impulse P with moment A about the centre of
+	// mass c) act along a line; where it meets the plane of the body's support points, p, tells
+	// statics' answer: inside the convex hull of the support points the supports can carry it,
+	// outside the body must tip (the statics of a rigid body on unilateral contacts).
+	const int id = m_solverBodyOfNode[node];
+	if (id < 0) return false;
+	const btSolverBody& body = pools.m_bodies[id];
+	const btRigidBody* rb = body.m_originalBody;
+	if (!rb || rb->getInvMass() == btScalar(0)) return false;
+	const btVector3 g = rb->getGravity();
+	const btScalar gLength = g.length();
+	if (!(gLength > SIMD_EPSILON)) return false;
+	const btVector3 up = -g / gLength;
+	btVector3 P = g * (timeStep / rb->getInvMass());
+	btVector3 A(0, 0, 0);
+	// The whole load of the contacts resting on it (the layer above), normal parts only: the
+	// friction PGS leaves between a body and its supports is not determined by statics (a
+	// squeeze), and would tip what carries it.
+	if (layer + 1 < m_numLayers)
+		for (int r = m_contactStart[layer + 1]; r < m_contactStart[layer + 2]; ++r)
+		{
+			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+			const btScalar lambda = row.m_appliedImpulse;
+			if (row.m_solverBodyIdA == id)
+			{
+				P += row.m_contactNormal1 * lambda;
+				A += row.m_relpos1CrossNormal * lambda;
+			}
+			else if (row.m_solverBodyIdB == id)
+			{
+				P += row.m_contactNormal2 * lambda;
+				A += row.m_relpos2CrossNormal * lambda;
+			}
+		}
+	const btScalar down = -P.dot(up);
+	if (!(down > SIMD_EPSILON)) return false;  // nothing pressing down: no statics to judge
+	// Support points: the contact points of the layer's rows with this body as the free end.
+	const btVector3 c = rb->getCenterOfMassPosition();
+	btVector3 u, v;
+	btPlaneSpace1(up, u, v);
+	m_hull.resize(0);
+	btScalar plane = SIMD_INFINITY;
+	for (int r = m_contactStart[layer]; r < m_contactStart[layer + 1]; ++r)
+	{
+		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+		if (row.m_solverBodyIdA != id && row.m_solverBodyIdB != id) continue;
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+		if (!cp) continue;
+		const btVector3 n = row.m_solverBodyIdA == id ? row.m_contactNormal1 : row.m_contactNormal2;
+		if (n.dot(up) < btScalar(0.5)) continue;  // side contacts do not carry weight
+		const btVector3 x = cp->getPositionWorldOnB() - c;
+		plane = btMin(plane, x.dot(up));
+		m_hull.push_back(btVector3(x.dot(u), x.dot(v), 0));
+	}
+	if (m_hull.size() == 0) return false;
+	// The line of action: d x P = A, d = d0 + t P; at the support plane d . up = plane.
+	const btVector3 d0 = P.cross(A) / P.length2();
+	const btScalar t = (plane - d0.dot(up)) / P.dot(up);
+	const btVector3 d = d0 + P * t;
+	const btScalar px = d.dot(u), py = d.dot(v);
+	// Convex hull of the support points (monotone chain), then p against each edge.
+	const int n = m_hull.size();
+	m_hull.quickSort([](const btVector3& a, const btVector3& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+	auto cross = [](const btVector3& o, const btVector3& a, const btVector3& b) { return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x()); };
+	m_hullChain.resize(0);
+	for (int pass = 0; pass < 2; ++pass)
+	{
+		const int start = m_hullChain.size();
+		for (int i = 0; i < n; ++i)
+		{
+			const btVector3& q = m_hull[pass == 0 ? i : n - 1 - i];
+			while (m_hullChain.size() >= start + 2 && cross(m_hullChain[m_hullChain.size() - 2], m_hullChain[m_hullChain.size() - 1], q) <= btScalar(0))
+				m_hullChain.pop_back();
+			m_hullChain.push_back(q);
+		}
+		m_hullChain.pop_back();
+	}
+	if (m_hullChain.size() < 3) return true;  // resting on an edge or a point: any moment tips it
+	// Outside by more than `margin` of the hull's size (a load near the edge is carried: the
+	// split of a load between a manifold's points is not determined by statics).
+	btScalar size = 0;
+	for (int i = 0; i < m_hullChain.size(); ++i) size = btMax(size, (m_hullChain[i] - m_hullChain[0]).length());
+	const btVector3 p(px, py, 0);
+	for (int i = 0; i < m_hullChain.size(); ++i)
+	{
+		const btVector3& a = m_hullChain[i];
+		const btVector3& b = m_hullChain[(i + 1) % m_hullChain.size()];
+		const btScalar edge = (b - a).length();
+		if (edge > SIMD_EPSILON && cross(a, b, p) / edge < -margin * size) return true;
+	}
+	return false;
+}

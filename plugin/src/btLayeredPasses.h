@@ -30,6 +30,7 @@ struct btWeightPassParams
 	btScalar m_timeStep = 0;          ///< s
 	btScalar m_slack = 0;             ///< an unconverged re-solve may speed a body up by this share of its |g| dt
 	btScalar m_tipGain = 1;           ///< a converged one by this share (a body tipping under its load)
+	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
 };
 
 /// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
@@ -101,10 +102,13 @@ private:
 	btScalar sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
 	/// Load transfer (btLoadTransfer.h) for every free body of the layer, from the deltas in m_before.
 	void transferLoads(int layer, const btSolverPools& pools);
+	/// D16 guard: whether the body's weight and the load withheld for it act outside the convex
+	/// hull of its support points (statics: it must tip).
+	bool loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin);
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
 	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
-	void withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse);
+	void withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse, bool normal);
 	bool hasJoints(int layer, const btSolverPools& pools) const { return layer == 0 && m_withJoints && pools.m_joints.size() > 0; }
 	/// Friction or rolling-friction rows into the layers of their contact rows.
 	void bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
@@ -141,6 +145,8 @@ private:
 	btAlignedObjectArray<int> m_localOf, m_transferStart, m_transferCursor;
 	btAlignedObjectArray<btLoadTransferRow> m_transferRows;
 
+	btAlignedObjectArray<char> m_tips;  // weight pass: per free body of the layer, its load acts outside its support
+	btAlignedObjectArray<btVector3> m_hull, m_hullChain;  // support points in the plane, their convex hull
 	btAlignedObjectArray<btScalar> m_pushSpeed;  // per graph node: fastest approach of a body whose load it got (m/s)
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate

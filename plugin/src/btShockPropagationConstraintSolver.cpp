@@ -80,6 +80,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	if (!(settings.m_diagnostics.m_warmStartCoupling >= 0 && settings.m_diagnostics.m_warmStartCoupling <= 1)) m_settings.m_diagnostics.m_warmStartCoupling = defaults.m_diagnostics.m_warmStartCoupling;
 	if (!(settings.m_diagnostics.m_warmStartWeights >= 0)) m_settings.m_diagnostics.m_warmStartWeights = defaults.m_diagnostics.m_warmStartWeights;
 	if (!(settings.m_diagnostics.m_weightGuardSlack >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightGuardSlack)) m_settings.m_diagnostics.m_weightGuardSlack = defaults.m_diagnostics.m_weightGuardSlack;
+	if (!(settings.m_diagnostics.m_weightGuardTipMargin >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightGuardTipMargin)) m_settings.m_diagnostics.m_weightGuardTipMargin = defaults.m_diagnostics.m_weightGuardTipMargin;
 	if (!(settings.m_diagnostics.m_weightGuardTipping >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightGuardTipping)) m_settings.m_diagnostics.m_weightGuardTipping = defaults.m_diagnostics.m_weightGuardTipping;
 }
 
@@ -259,6 +260,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_timeStep = info.m_timeStep;
 		weight.m_slack = m_settings.m_diagnostics.m_weightGuardSlack;
 		weight.m_tipGain = m_settings.m_diagnostics.m_weightGuardTipping;
+		weight.m_tipMargin = m_settings.m_diagnostics.m_weightGuardTipMargin;
 		weight.m_convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);

@@ -119,13 +119,18 @@ struct btShockPropagationDiagnostics
 	/// sags; it never gains energy). Measured in docs/design.md, D16.
 	btScalar m_weightGuardSlack = btScalar(0.1);
 
-	/// Weight pass guard (D16), in steps of free fall |g| dt (unitless): a re-solve that converged
-	/// (m_weightConvergence) may speed a body up by this much more, for a body tipping under a load
-	/// past its support's edge. Default 0 (off). Measured (docs/design.md, D16): 20 lets
-	/// BenchmarkDemo's leaning columns fall as they must, but also accepts re-solves that converge
-	/// to a wrong motion: a light cube under a 100x slab is levered off (30 cm), and with the
-	/// second correction masking that, the round tower drifts 6 cm in 5 s.
+	/// Weight pass guard (D16), in steps of free fall |g| dt (unitless): a body that statics says
+	/// must tip (its weight and the normal load of the contacts resting on it act outside the
+	/// convex hull of its support points, by m_weightGuardTipMargin) may be sped up by this much
+	/// more, if its re-solve converged and it pivots rather than sinks. 0 turns tipping off (the
+	/// leaning tower only sags); measured in docs/design.md, D16.
 	btScalar m_weightGuardTipping = btScalar(3);
+
+	/// The D16 statics test's margin, as a share of the support's size (unitless): how far outside
+	/// the hull of its support points a load must act before a body is taken to tip. The split of a
+	/// load between a manifold's points is not determined by statics; at 0.01 the round tower at
+	/// 100 iterations "tips" bricks whose loads sit at their supports' edges (docs/design.md, D16).
+	btScalar m_weightGuardTipMargin = btScalar(0.1);
 
 	/// Warm-start factor of stacked groups (unitless, 0..1). Bullet scales each contact's cached
 	/// impulse by the app's m_warmstartingFactor (0.85 by default), a damping for plain PGS. Here
