@@ -86,7 +86,8 @@ TEST(Stacking, LeaningStackWithCentreOfMassOutsideBaseStillFalls)
 {
 	// No over-stability from fixation: each cube overhangs the one below by more than half its
 	// width, so its centre of mass is outside its support and the stack must topple. (A stack that
-	// is stable box by box but not as a whole needs weight feeling: docs/measurements.md, "Measured".)
+	// is stable box by box but not as a whole: the truth suite's offset stacks, tests/truth; it needs
+	// the top-down pass, D16 in docs/design.md.)
 	harness::Trial run(spec::shock(), "leaning_tower", {{"n", 4}, {"shift", 0.55}});
 	run.run(5.0);
 	EXPECT_GT(run.drift().drift(run.named("top")), 0.5);
