@@ -106,13 +106,13 @@ void btLayeredPasses::markFixated(int layer, char value)
 	}
 }
 
-void btLayeredPasses::withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse, bool normal)
+void btLayeredPasses::withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse)
 {
 	// J_F^T impulse on the fixated end F, kept for it instead of applied.
 	const int node = m_nodeOfSolverBody[sideA ? row.m_solverBodyIdA : row.m_solverBodyIdB];
 	if (node < 0) return;
 	m_withheld.add(node, (sideA ? row.m_contactNormal1 : row.m_contactNormal2) * impulse,
-				   (sideA ? row.m_relpos1CrossNormal : row.m_relpos2CrossNormal) * impulse, normal);
+				   (sideA ? row.m_relpos1CrossNormal : row.m_relpos2CrossNormal) * impulse);
 }
 
 template <class Visit>
@@ -178,7 +178,7 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
 		if (!withhold || change == btScalar(0)) return;
 		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
-		withholdFromFixated(c, fixA, change, kind == BT_ROW_CONTACT);
+		withholdFromFixated(c, fixA, change);
 		if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
 		{
 			// How fast the free end pressed on the fixated one at setup (m/s along the normal):
@@ -268,7 +268,7 @@ void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScal
 			btSolverBody& body = pools.m_bodies[id];
 			if (fixA) body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, -unfelt);
 			else body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, -unfelt);
-			withholdFromFixated(c, fixA, unfelt, true);
+			withholdFromFixated(c, fixA, unfelt);
 			m_withheld.holdBack(rowIndex, unfelt);
 		}
 		markFixated(layer, 0);
@@ -327,9 +327,6 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			m_before[i].m_deltaLinear = b.internalGetDeltaLinearVelocity();
 			m_before[i].m_deltaAngular = b.internalGetDeltaAngularVelocity();
 		}
-		// Statics first (D16): does the load handed to each body act outside its support?
-		m_tips.resize(numFree);
-		for (int i = 0; i < numFree; ++i) m_tips[i] = weight.m_tipGain > btScalar(0) && loadOutsideSupport(k, m_layers->getFreeBody(k, i), pools, weight.m_timeStep, weight.m_tipMargin);
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
 		fixate(k, params, pools);
 		if (weight.m_transfer) transferLoads(k, pools);
@@ -343,12 +340,6 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			++total;
 			if (lastChange <= converged2) break;
 		}
-		// D16 guard. A re-solve that converged (its last sweep changed no row's velocity by more
-		// than weight.m_convergedSpeed) stands, whatever it did to the layer: a body under a load
-		// past its support's edge tips. One that did not converge may stand only if it left no
-		// body faster than before its load arrived (by more than the slack): otherwise the
-		// layer could not carry its load within its sweeps, keeps its state from before the
-		// load and hands nothing on (it sags, as the classic method does; never gains energy).
 		// D16 guard. A load handed down cannot push a body faster than the bodies that pressed it
 		// on it moved towards it (an inelastic push), plus the slack. A re-solve that leaves a
 		// free body's centre of mass faster than that could not carry its load within its sweeps;
@@ -363,20 +354,22 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const int id = m_solverBodyOfNode[node];
 			if (id < 0) continue;
 			btSolverBody& b = pools.m_bodies[id];
-			const btScalar fall = b.m_originalBody ? b.m_originalBody->getGravity().length() * weight.m_timeStep : btScalar(0);
+			const btVector3 g = b.m_originalBody ? b.m_originalBody->getGravity() : btVector3(0, 0, 0);
+			const btScalar fall = g.length() * weight.m_timeStep;
 			const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
 			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
 			const btScalar before = (base + m_before[i].m_deltaLinear).length();
 			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
-			if (m_tips[i] && converged && after <= before + weight.m_tipGain * fall)
+			if (converged && after <= before + weight.m_tipGain * fall && fall > btScalar(0))
 			{
 				// Tipping pivots a body on its support; a body pressed down into what is below it
-				// has not carried its load.
-				const btVector3 down = b.m_originalBody->getGravity() / btMax(fall / weight.m_timeStep, SIMD_EPSILON);
-				const btScalar sink = (b.internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear).dot(down);
-				if (sink <= weight.m_slack * fall) continue;
+				// has not carried its load. (The rows the statics test reads are not changed by
+				// the re-solve: the load rests on the layer above, the support points are geometry.)
+				const btScalar sink = (b.internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear).dot(g) / g.length();
+				if (sink <= weight.m_slack * fall && loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin)) continue;
 			}
 			anyRejected = true;
+			break;
 		}
 		if (anyRejected)
 		{
@@ -463,8 +456,8 @@ void btLayeredPasses::transferLoads(int layer, const btSolverPools& pools)
 
 bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin)
 {
-	// The body's weight and the load withheld for it (an impulse P with moment A about the centre of
-	// mass c) act along a line; where it meets the plane of the body's support points, p, tells
+	// The body's weight and the load of the contacts resting on it (an impulse P with moment A
+	// about the centre of mass c) act along a line; where it meets the plane of the body's support points, p, tells
 	// statics' answer: inside the convex hull of the support points the supports can carry it,
 	// outside the body must tip (the statics of a rigid body on unilateral contacts).
 	const int id = m_solverBodyOfNode[node];

@@ -28,8 +28,8 @@ struct btWeightPassParams
 	bool m_transfer = true;           ///< load transfer before the sweeps (btLoadTransfer.h)
 	btScalar m_convergedSpeed = 0;    ///< m/s: a re-solve whose last sweep changed no row's velocity by more has converged
 	btScalar m_timeStep = 0;          ///< s
-	btScalar m_slack = 0;             ///< an unconverged re-solve may speed a body up by this share of its |g| dt
-	btScalar m_tipGain = 1;           ///< a converged one by this share (a body tipping under its load)
+	btScalar m_slack = 0;             ///< a load may speed a body up by this share of its |g| dt beyond its loads' approach
+	btScalar m_tipGain = 1;           ///< a body statics says must tip, by this share, if its re-solve converged
 	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
 };
 
@@ -108,7 +108,7 @@ private:
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
 	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
-	void withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse, bool normal);
+	void withholdFromFixated(const btSolverConstraint& row, bool sideA, btScalar impulse);
 	bool hasJoints(int layer, const btSolverPools& pools) const { return layer == 0 && m_withJoints && pools.m_joints.size() > 0; }
 	/// Friction or rolling-friction rows into the layers of their contact rows.
 	void bucketFollowers(const btConstraintArray& rows, const btAlignedObjectArray<int>& contactLayer, btAlignedObjectArray<int>& start,
@@ -145,7 +145,6 @@ private:
 	btAlignedObjectArray<int> m_localOf, m_transferStart, m_transferCursor;
 	btAlignedObjectArray<btLoadTransferRow> m_transferRows;
 
-	btAlignedObjectArray<char> m_tips;  // weight pass: per free body of the layer, its load acts outside its support
 	btAlignedObjectArray<btVector3> m_hull, m_hullChain;  // support points in the plane, their convex hull
 	btAlignedObjectArray<btScalar> m_pushSpeed;  // per graph node: fastest approach of a body whose load it got (m/s)
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)

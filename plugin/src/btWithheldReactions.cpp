@@ -22,28 +22,19 @@ void btWithheldReactions::reset(int numNodes, int numContactRows)
 	for (int i = 0; i < numContactRows; ++i) m_heldBack[i] = btScalar(0);
 	m_linear.resize(numNodes);
 	m_angular.resize(numNodes);
-	m_normalLinear.resize(numNodes);
-	m_normalAngular.resize(numNodes);
 	m_has.resize(numNodes);
 	for (int i = 0; i < numNodes; ++i)
 	{
 		m_linear[i].setZero();
 		m_angular[i].setZero();
-		m_normalLinear[i].setZero();
-		m_normalAngular[i].setZero();
 		m_has[i] = 0;
 	}
 }
 
-void btWithheldReactions::add(int node, const btVector3& linear, const btVector3& angular, bool normal)
+void btWithheldReactions::add(int node, const btVector3& linear, const btVector3& angular)
 {
 	m_linear[node] += linear;
 	m_angular[node] += angular;
-	if (normal)
-	{
-		m_normalLinear[node] += linear;
-		m_normalAngular[node] += angular;
-	}
 	m_has[node] = 1;
 }
 
@@ -66,7 +57,5 @@ void btWithheldReactions::discard(int node)
 {
 	m_linear[node].setZero();
 	m_angular[node].setZero();
-	m_normalLinear[node].setZero();
-	m_normalAngular[node].setZero();
 	m_has[node] = 0;
 }

@@ -34,14 +34,9 @@ class btWithheldReactions
 public:
 	void reset(int numNodes, int numContactRows);
 	/// Withhold the impulse (linear, angular; world frame) from node.
-	/// Withhold the impulse (linear, angular; world frame) from node; `normal`: it comes from a
-	/// contact normal row (kept apart as well, for the statics test of the D16 guard).
-	void add(int node, const btVector3& linear, const btVector3& angular, bool normal);
+	/// Withhold the impulse (linear, angular; world frame) from node.
+	void add(int node, const btVector3& linear, const btVector3& angular);
 	bool has(int node) const { return m_has[node] != 0; }
-	/// The part of node's withheld impulse that came from contact normals (world frame; angular
-	/// about its centre of mass).
-	const btVector3& normalLinear(int node) const { return m_normalLinear[node]; }
-	const btVector3& normalAngular(int node) const { return m_normalAngular[node]; }
 	/// Apply node's withheld impulse to its solver body (as a velocity change) and forget it.
 	void deliver(int node, btSolverBody& body);
 	/// Forget node's withheld impulse.
@@ -61,8 +56,6 @@ public:
 private:
 	btAlignedObjectArray<btVector3> m_linear;
 	btAlignedObjectArray<btVector3> m_angular;
-	btAlignedObjectArray<btVector3> m_normalLinear;   // the part from contact normal rows
-	btAlignedObjectArray<btVector3> m_normalAngular;
 	btAlignedObjectArray<char> m_has;
 	btAlignedObjectArray<btScalar> m_heldBack;  // per contact row
 };
