@@ -203,6 +203,18 @@ void addHarmonicStacks(std::vector<TruthCase>& cases)
 // ---------------------------------------------------------------------------------------------------
 // Friction.
 
+/// A stack that must slide as one: its acceleration within 10% of `expected` and no box more than
+/// kRestToleranceMeters from where the bottom box carries it.
+void slidesTogether(Verdict& v, double a, double expected, double apart, bool nonFinite)
+{
+	v.unit = "m/s^2";
+	v.figure = a;
+	v.expected = expected;
+	const bool rate = std::fabs(a - expected) <= 0.1 * expected;
+	const bool together = apart < kRestToleranceMeters;
+	v.pass = rate && together && !nonFinite;
+}
+
 // Pushed stack (truth/pushed_stack): 5 boxes of 1 kg, 1 x 0.5 x 1 m; box-ground mu = 0.5 (ground friction
 // 0.5, box friction 1: Bullet multiplies), box-box mu = 1. A horizontal force F on the bottom box only.
 // Coulomb: the stack stays at rest iff F <= mu W (W = total weight; the ground is the only resistance).
@@ -255,12 +267,7 @@ Verdict pushedStack(const harness::SolverSpec& spec, double capacityFraction)
 	{
 		const double expected = (force - kPushGroundMu * weight) / mass;
 		const double a = fittedAcceleration(t, x);
-		v.unit = "m/s^2";
-		v.figure = a;
-		v.expected = expected;
-		const bool rate = std::fabs(a - expected) <= 0.1 * expected;
-		const bool together = apart < kRestToleranceMeters;
-		v.pass = rate && together && !s.nonFinite;
+		slidesTogether(v, a, expected, apart, s.nonFinite);
 		v.detail = format("F = %.2f mu W: a = %.3f m/s^2 against (F - mu W) / M = %.3f (within 10%%); boxes apart by %.4f m (limit 0.01)",
 						  capacityFraction, a, expected, apart);
 	}
@@ -315,12 +322,7 @@ Verdict rampStack(const harness::SolverSpec& spec, double mu)
 	{
 		const double expected = kGravity * (std::sin(angle) - mu * std::cos(angle));
 		const double a = fittedAcceleration(t, x);
-		v.unit = "m/s^2";
-		v.figure = a;
-		v.expected = expected;
-		const bool rate = std::fabs(a - expected) <= 0.1 * expected;
-		const bool together = apart < kRestToleranceMeters;
-		v.pass = rate && together && !s.nonFinite;
+		slidesTogether(v, a, expected, apart, s.nonFinite);
 		v.detail = format("mu = %.2f < tan(20 deg): a = %.3f m/s^2 against g (sin a - mu cos a) = %.3f (within 10%%); boxes apart by %.4f m (limit 0.01)",
 						  mu, a, expected, apart);
 	}
