@@ -328,6 +328,11 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			m_before[i].m_deltaAngular = b.internalGetDeltaAngularVelocity();
 		}
 		if (!receiveWithheld(k, pools)) continue;  // nothing rests on this layer's bodies
+		for (int i = 0; i < numFree; ++i)
+		{
+			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
+			m_before[i].m_loadLinear = id < 0 ? btVector3(0, 0, 0) : pools.m_bodies[id].internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
+		}
 		fixate(k, params, pools);
 		if (weight.m_transfer) transferLoads(k, pools);
 		// Sweeps until the re-solve converges (no row's velocity changed by more than
@@ -342,10 +347,11 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		}
 		// D16 guard. A load handed down cannot push a body faster than the bodies that pressed it
 		// on it moved towards it (an inelastic push), plus the slack. A re-solve that leaves a
-		// free body's centre of mass faster than that could not carry its load within its sweeps;
-		// unless statics says the body must tip (its weight and load act outside its support), the
-		// re-solve converged, the gain stays within m_tipGain steps of free fall and the body
-		// pivots rather than sinks.
+		// free body's centre of mass faster than that could not carry its load within its sweeps,
+		// unless it converged, the gain stays within m_tipGain steps of free fall, and the body
+		// either slides (D17: dragged along its supports by the load's tangential part, no more)
+		// or tips where statics says it must (its weight and load act outside its support, and it
+		// pivots rather than sinks).
 		const bool converged = lastChange <= converged2;
 		bool anyRejected = false;
 		for (int i = 0; i < numFree; ++i)
@@ -362,11 +368,20 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
 			if (converged && after <= before + weight.m_tipGain * fall && fall > btScalar(0))
 			{
+				const btVector3 dv = b.internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
+				const btScalar slack = weight.m_slack * fall;
+				// Sliding: friction only resists, so along the supports' tangent plane a load cannot
+				// speed a body up by more than the load alone would (on a frictionless support), and
+				// a sliding body neither sinks into its supports nor lifts off them.
+				const btVector3 n = supportNormal(k, id, g, pools);
+				const btVector3& load = m_before[i].m_loadLinear;
+				const btScalar dvn = dv.dot(n);
+				if (btFabs(dvn) <= slack && (dv - n * dvn).length() <= (load - n * load.dot(n)).length() + slack) continue;
 				// Tipping pivots a body on its support; a body pressed down into what is below it
 				// has not carried its load. (The rows the statics test reads are not changed by
 				// the re-solve: the load rests on the layer above, the support points are geometry.)
-				const btScalar sink = (b.internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear).dot(g) / g.length();
-				if (sink <= weight.m_slack * fall && loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin)) continue;
+				const btScalar sink = dv.dot(g) / g.length();
+				if (sink <= slack && loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin)) continue;
 			}
 			anyRejected = true;
 			break;
@@ -547,4 +562,20 @@ bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPool
 		if (edge > SIMD_EPSILON && cross(a, b, p) / edge < -margin * size) return true;
 	}
 	return false;
+}
+
+btVector3 btLayeredPasses::supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools) const
+{
+	// The mean normal of the body's supports in this layer (pointing into the body); without any,
+	// against gravity.
+	btVector3 n(0, 0, 0);
+	for (int r = m_contactStart[layer]; r < m_contactStart[layer + 1]; ++r)
+	{
+		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+		if (row.m_solverBodyIdA == id) n += row.m_contactNormal1;
+		else if (row.m_solverBodyIdB == id) n += row.m_contactNormal2;
+	}
+	if (!(n.length2() > SIMD_EPSILON)) n = -gravity;
+	if (!(n.length2() > SIMD_EPSILON)) return btVector3(0, 0, 0);
+	return n.normalized();
 }

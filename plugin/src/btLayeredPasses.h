@@ -29,7 +29,7 @@ struct btWeightPassParams
 	btScalar m_convergedSpeed = 0;    ///< m/s: a re-solve whose last sweep changed no row's velocity by more has converged
 	btScalar m_timeStep = 0;          ///< s
 	btScalar m_slack = 0;             ///< a load may speed a body up by this share of its |g| dt beyond its loads' approach
-	btScalar m_tipGain = 1;           ///< a body statics says must tip, by this share, if its re-solve converged
+	btScalar m_tipGain = 1;           ///< a converged re-solve may speed a body that tips or slides up by this share of |g| dt
 	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
 };
 
@@ -89,9 +89,10 @@ public:
 	/// D13/D16, top-down: the free bodies of each layer receive what the layers above withheld from
 	/// them; their support rows take that load (load transfer), then the layer is re-solved with
 	/// its own lower bodies fixated (withholding in turn). Returns the number of sweeps run.
-	/// Guard: a re-solve that did not converge and left a free body faster than before its load
-	/// arrived could not carry the load; it keeps its state from before and hands nothing on
-	/// (counted in *rejected).
+	/// Guard: a re-solve that left a free body faster than its load could push it could not carry
+	/// the load, unless it converged and the body tips or slides as statics and friction allow
+	/// (D16, D17); a rejected layer keeps its state from before and hands nothing on (counted in
+	/// *rejected).
 	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, const btWeightPassParams& weight, int* rejected);
 
 
@@ -105,6 +106,9 @@ private:
 	/// D16 guard: whether the body's weight and the load withheld for it act outside the convex
 	/// hull of its support points (statics: it must tip).
 	bool loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin);
+	/// The mean normal of the body's (solver body id) supports in the layer, unit, pointing into
+	/// the body; against gravity where it has none (D16 guard).
+	btVector3 supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools) const;
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
 	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
@@ -138,6 +142,7 @@ private:
 	{
 		btVector3 m_deltaLinear;
 		btVector3 m_deltaAngular;
+		btVector3 m_loadLinear;    // the velocity change the delivered load alone gave the body
 	};
 	btAlignedObjectArray<btBodyDelta> m_before;           // weight pass: free bodies before their load
 	// Load transfer: per solver body its index among the layer's free bodies (-1 otherwise), and

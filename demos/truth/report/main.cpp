@@ -6,6 +6,7 @@
 // MLCP runs each case in a child process under a time limit (--timeout, 20 s): a case it cannot
 // finish in time is marked "skipped". It runs after the other configurations of the same case, so
 // the case's cached reference is already computed when the child is forked.
+#include <harness/CommandLine.h>
 #include <truth/TruthCase.h>
 
 #include <cerrno>
@@ -37,7 +38,8 @@ const char* kUsage =
 	"  --csv      CSV output (default demos/charts/results/truth.csv under the source tree)\n"
 	"  --md       markdown table output (default: standard output)\n"
 	"  --timeout  seconds an MLCP case may take before it is skipped (default 20)\n"
-	"  --list     print the cases and exit\n";
+	"  --list     print the cases and exit\n"
+	"  plugin flags (below) apply to the plugin's configurations; a flag with a comma list runs each variant\n";
 
 struct Config
 {
@@ -211,6 +213,7 @@ int main(int argc, char** argv)
 {
 	std::string configList = defaultConfigs(), caseList, csvPath = sourceTree() + "/demos/charts/results/truth.csv", mdPath;
 	double timeout = 20;
+	harness::PluginFlags plugin;  // applied to the plugin's configurations, every combination
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string arg = argv[i];
@@ -236,10 +239,20 @@ int main(int argc, char** argv)
 		else if (arg == "--help" || arg == "-h")
 		{
 			std::cout << kUsage;
+			harness::PluginFlags::printUsage(std::cout);
 			return 0;
 		}
 		else
 		{
+			try
+			{
+				if (plugin.parse(argc, argv, i)) continue;
+			}
+			catch (const std::invalid_argument& e)
+			{
+				std::cerr << e.what() << "\n";
+				return 2;
+			}
 			std::cerr << "unknown option " << arg << "\n" << kUsage;
 			return 2;
 		}
@@ -255,7 +268,18 @@ int main(int argc, char** argv)
 			std::cerr << error << "\n";
 			return 2;
 		}
-		configs.push_back(config);
+		if (!config.spec.isPlugin())
+		{
+			configs.push_back(config);
+			continue;
+		}
+		for (const btShockPropagationSettings& settings : plugin.expand(config.spec.settings))
+		{
+			Config variant = config;
+			variant.spec.settings = settings;
+			variant.column += harness::pluginSettingsLabel(settings);
+			configs.push_back(variant);
+		}
 	}
 	std::vector<const truth::TruthCase*> cases;
 	const std::vector<std::string> wanted = split(caseList);

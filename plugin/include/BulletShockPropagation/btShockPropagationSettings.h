@@ -119,11 +119,13 @@ struct btShockPropagationDiagnostics
 	/// sags; it never gains energy). Measured in docs/design.md, D16.
 	btScalar m_weightGuardSlack = btScalar(0.1);
 
-	/// Weight pass guard (D16), in steps of free fall |g| dt (unitless): a body that statics says
-	/// must tip (its weight and the normal load of the contacts resting on it act outside the
-	/// convex hull of its support points, by m_weightGuardTipMargin) may be sped up by this much
-	/// more, if its re-solve converged and it pivots rather than sinks. 0 turns tipping off (the
-	/// leaning tower only sags); measured in docs/design.md, D16.
+	/// Weight pass guard (D16, D17), in steps of free fall |g| dt (unitless): if its re-solve
+	/// converged, a body may be sped up by this much more when it tips where statics says it must
+	/// (its weight and the normal load of the contacts resting on it act outside the convex hull of
+	/// its support points, by m_weightGuardTipMargin; it pivots rather than sinks) or when it slides
+	/// (D17: along its supports' tangent plane by no more than the load's own tangential part, with
+	/// no sinking or lifting off). 0 turns both off (the leaning tower only sags, a dragged stack
+	/// stops); measured in docs/design.md, D16 and D17.
 	btScalar m_weightGuardTipping = btScalar(3);
 
 	/// The D16 statics test's margin, as a share of the support's size (unitless): how far outside
