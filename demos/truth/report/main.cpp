@@ -214,6 +214,7 @@ int main(int argc, char** argv)
 	std::string configList = defaultConfigs(), caseList, csvPath = sourceTree() + "/demos/charts/results/truth.csv", mdPath;
 	double timeout = 20;
 	harness::PluginFlags plugin;  // applied to the plugin's configurations, every combination
+	bool pluginFlagsGiven = false;
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string arg = argv[i];
@@ -246,7 +247,11 @@ int main(int argc, char** argv)
 		{
 			try
 			{
-				if (plugin.parse(argc, argv, i)) continue;
+				if (plugin.parse(argc, argv, i))
+				{
+					pluginFlagsGiven = true;
+					continue;
+				}
 			}
 			catch (const std::invalid_argument& e)
 			{
@@ -277,7 +282,7 @@ int main(int argc, char** argv)
 		{
 			Config variant = config;
 			variant.spec.settings = settings;
-			variant.column += harness::pluginSettingsLabel(settings);
+			if (pluginFlagsGiven) variant.column += harness::pluginSettingsLabel(settings);
 			configs.push_back(variant);
 		}
 	}
