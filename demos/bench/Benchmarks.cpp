@@ -86,7 +86,7 @@ struct PhaseSums
 {
 	int steps = 0;
 	double total = 0;  ///< the whole step (ratio mode only; Google Benchmark times Step itself)
-	double collision = 0, graph = 0, global = 0, layers = 0, weightFeeling = 0, correction = 0;
+	double collision = 0, graph = 0, setup = 0, global = 0, layers = 0, weightFeeling = 0, correction = 0;
 
 	/// Adds the last step of `sim` (its statistics describe that step).
 	void add(harness::Simulation& sim)
@@ -97,6 +97,7 @@ struct PhaseSums
 		{
 			const btShockPropagationStatistics& st = solver->getStatistics();
 			graph += st.m_timeGraphMs;
+			setup += st.m_timeSetupMs;
 			global += st.m_timeGlobalDynamicsMs;
 			layers += st.m_timeLayersMs;
 			weightFeeling += st.m_timeWeightFeelingMs;
@@ -182,6 +183,7 @@ void step(benchmark::State& state, const std::string& scene, const std::string& 
 	if (sim.shockSolver())
 	{
 		state.counters["graph_ms"] = phases.perStep(phases.graph);
+		state.counters["setup_ms"] = phases.perStep(phases.setup);
 		state.counters["global_ms"] = phases.perStep(phases.global);
 		state.counters["layers_ms"] = phases.perStep(phases.layers);
 		state.counters["wf_ms"] = phases.perStep(phases.weightFeeling);
@@ -291,7 +293,7 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 					sps / si, fixed(r.siDrift * 100, 1).c_str(), fixed(r.spDrift * 100, 1).c_str(), fixed(r.spSolverDrift * 100, 1).c_str());
 	}
 	std::printf("\nper-phase ms per step (coll: Bullet's collision detection, every call; the rest from btShockPropagationStatistics)\n");
-	std::printf("%-24s %-10s %8s %8s %8s %8s %8s %8s %8s\n", "scene", "solver", "step", "coll", "graph", "global", "layers", "wf", "corr");
+	std::printf("%-24s %-10s %8s %8s %8s %8s %8s %8s %8s %8s\n", "scene", "solver", "step", "coll", "graph", "setup", "global", "layers", "wf", "corr");
 	for (const RatioRow& r : rows)
 	{
 		const PhaseSums* sums[3] = {&r.si, &r.sp, &r.spSolver};
@@ -300,10 +302,10 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 		{
 			const PhaseSums& p = *sums[k];
 			if (k == 0)
-				std::printf("%-24s %-10s %8.3f %8.3f %8s %8s %8s %8s %8s\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision), "-", "-", "-", "-", "-");
+				std::printf("%-24s %-10s %8.3f %8.3f %8s %8s %8s %8s %8s %8s\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision), "-", "-", "-", "-", "-", "-");
 			else
-				std::printf("%-24s %-10s %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision),
-							p.perStep(p.graph), p.perStep(p.global), p.perStep(p.layers), p.perStep(p.weightFeeling), p.perStep(p.correction));
+				std::printf("%-24s %-10s %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision),
+							p.perStep(p.graph), p.perStep(p.setup), p.perStep(p.global), p.perStep(p.layers), p.perStep(p.weightFeeling), p.perStep(p.correction));
 		}
 	}
 	std::fflush(stdout);

@@ -201,9 +201,11 @@ def plot_towers(rows, out_dir):
 PHASES = [
     ("collision_ms", "collision detection (both CDs)", "#bdbdbd"),
     ("graph_ms", "contact graph + layers", "#e41a1c"),
+    ("setup_ms", "Bullet's row setup (once per step)", "#fb9a99"),
     ("global_ms", "global pass, dynamics(f dt)", "#377eb8"),
-    ("layers_ms", "layer passes", "#4daf4a"),
-    ("correction_ms", "second correction", "#984ea3"),
+    ("layers_ms", "layer passes (up)", "#4daf4a"),
+    ("weight_ms", "weight pass (down)", "#a6d854"),
+    ("correction_ms", "finish and position correction", "#984ea3"),
     ("other_ms", "other (islands, integration)", "#ff7f00"),
 ]
 
@@ -239,7 +241,7 @@ def plot_scaling(rows, out_dir):
     labels = [r["bodies"] for r in plugin]
     bottom = [0.0] * len(plugin)
     for column, label, color in PHASES:
-        share = [100 * num(r[column]) / num(r["ms_per_step"]) for r in plugin]
+        share = [100 * num(r.get(column, 0)) / num(r["ms_per_step"]) for r in plugin]
         ax2.bar(labels, share, bottom=bottom, color=color, label=label)
         bottom = [b + s for b, s in zip(bottom, share)]
     ax2.axhline(10, color="black", linestyle=":", linewidth=1, label="10% (target for graph + layers)")

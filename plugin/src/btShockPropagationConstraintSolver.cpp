@@ -223,7 +223,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	// contact's impulse it felt then.
 	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING)
 		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_diagnostics.m_warmStartCoupling);
-	m_stats.m_timeGraphMs += millisecondsSince(clock);
+	m_stats.m_timeSetupMs += millisecondsSince(clock);
 
 	// Global pass: Bullet's own sweeps over every row, every body free; the app's residual
 	// threshold may end it early (the layers always run their sweeps).

@@ -158,6 +158,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipping), "tip", [](double g) { return g >= 0; }, ">= 0"),
 		numberFlag("--guard-slack", "S,...", "plugin: weight-pass guard slack, share of |g| dt (default 0.1; D16)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardSlack), "slack", [](double g) { return g >= 0; }, ">= 0"),
+		switchFlag("--app-friction", "plugin: stacked groups keep the app's friction rows (one per point by default) instead of two (D7)",
+				   diagnostic(&btShockPropagationDiagnostics::m_twoFrictionDirections), false, "appfriction"),
 		numberFlag("--weight-convergence", "C,...", "plugin: a weight-pass layer stops sweeping once no row's velocity changes by more than C |g| dt (default 0.006; D16)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightConvergence), "wconv", [](double c) { return c >= 0; }, ">= 0"),
 		numberFlag("--tip-margin", "M,...", "plugin: weight-pass guard, share of the support's size a load must act outside of to tip a body (default 0.1; D16)",

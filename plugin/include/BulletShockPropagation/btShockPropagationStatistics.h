@@ -30,7 +30,8 @@ struct btShockPropagationStatistics
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).
-	double m_timeGraphMs = 0;            ///< contact graph, layers, Bullet's row setup and rows into layers
+	double m_timeGraphMs = 0;            ///< contact graph and stack layers
+	double m_timeSetupMs = 0;            ///< Bullet's row setup (once per step), rows into layers, the warm-start split (D5)
 	double m_timeGlobalDynamicsMs = 0;   ///< global pass (and Bullet's own solve of groups without stacks)
 	double m_timeLayersMs = 0;           ///< layer passes, bottom-up
 	double m_timeWeightFeelingMs = 0;    ///< top-down pass of the weight-feeling mode (D13)
