@@ -96,8 +96,8 @@ TEST_P(Truth, HoldsUnderThePluginDefault)
 	std::fflush(stdout);
 	if (open)
 	{
-		// Reported, not asserted: the ragdoll pile, 0.4 mm outside its band in float, holds in
-		// double, so an open truth that holds in one build only says so.
+		// Reported, not asserted: a marginal case may hold in one build and not the other (the
+		// ragdoll pile did, before D17), so an open truth that holds in this build only says so.
 		GTEST_SKIP() << "open truth (docs/design.md, section 8)" << (openHolds ? ", holds in this build:" : ":") << openFigures;
 	}
 }
