@@ -15,6 +15,7 @@ subject to the following restrictions:
 #include "btLayeredPasses.h"
 
 #include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
+#include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "BulletShockPropagation/btStackLayers.h"
 
@@ -578,4 +579,64 @@ btVector3 btLayeredPasses::supportNormal(int layer, int id, const btVector3& gra
 	if (!(n.length2() > SIMD_EPSILON)) n = -gravity;
 	if (!(n.length2() > SIMD_EPSILON)) return btVector3(0, 0, 0);
 	return n.normalized();
+}
+
+void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int numManifolds, btScalar restSpeed)
+{
+	for (int i = 0; i < numManifolds; ++i)
+	{
+		btPersistentManifold* m = manifolds[i];
+		const auto found = m_pairLoadsLastStep.find(m);
+		if (found == m_pairLoadsLastStep.end() || found->second.m_body0 != m->getBody0() || found->second.m_body1 != m->getBody1()) continue;
+		btScalar carried = 0;
+		int fresh = 0;
+		for (int j = 0; j < m->getNumContacts(); ++j)
+		{
+			const btManifoldPoint& cp = m->getContactPoint(j);
+			carried += cp.m_appliedImpulse;
+			if (cp.getLifeTime() <= 1 && cp.m_appliedImpulse == btScalar(0)) ++fresh;
+		}
+		const btScalar missing = found->second.m_total - carried;
+		// A pair whose points are all new is a new contact (a landing, a bounce): its last load was
+		// no resting load. Only points that replace or join persisting ones inherit.
+		if (fresh == 0 || fresh == m->getNumContacts() || !(missing > btScalar(0))) continue;
+		// Only a resting pair keeps its load: every new point's relative velocity is below restSpeed
+		// (a body that tips or slides off its support makes new points at a moving edge).
+		const btRigidBody* a = btRigidBody::upcast(m->getBody0());
+		const btRigidBody* b = btRigidBody::upcast(m->getBody1());
+		bool resting = true;
+		for (int j = 0; j < m->getNumContacts() && resting; ++j)
+		{
+			const btManifoldPoint& cp = m->getContactPoint(j);
+			if (cp.getLifeTime() > 1 || cp.m_appliedImpulse != btScalar(0)) continue;
+			const btVector3 va = a ? a->getVelocityInLocalPoint(cp.getPositionWorldOnA() - a->getCenterOfMassPosition()) : btVector3(0, 0, 0);
+			const btVector3 vb = b ? b->getVelocityInLocalPoint(cp.getPositionWorldOnB() - b->getCenterOfMassPosition()) : btVector3(0, 0, 0);
+			resting = (va - vb).length() < restSpeed;
+		}
+		if (!resting) continue;
+		for (int j = 0; j < m->getNumContacts(); ++j)
+		{
+			btManifoldPoint& cp = m->getContactPoint(j);
+			if (cp.getLifeTime() > 1 || cp.m_appliedImpulse != btScalar(0)) continue;
+			cp.m_appliedImpulse = missing / btScalar(fresh);
+			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
+		}
+	}
+}
+
+void btLayeredPasses::recordPairLoads(btPersistentManifold** manifolds, int numManifolds)
+{
+	for (int i = 0; i < numManifolds; ++i)
+	{
+		const btPersistentManifold* m = manifolds[i];
+		btScalar total = 0;
+		for (int j = 0; j < m->getNumContacts(); ++j) total += m->getContactPoint(j).m_appliedImpulse;
+		m_pairLoadsThisStep[m] = btPairLoad{m->getBody0(), m->getBody1(), total};
+	}
+}
+
+void btLayeredPasses::endStep()
+{
+	m_pairLoadsLastStep.swap(m_pairLoadsThisStep);
+	m_pairLoadsThisStep.clear();
 }

@@ -20,6 +20,10 @@ subject to the following restrictions:
 #include "btLoadTransfer.h"
 #include "btWithheldReactions.h"
 
+#include <unordered_map>
+
+class btPersistentManifold;
+
 class btStackLayers;
 
 /// The weight pass's settings for one step (D16).
@@ -69,6 +73,15 @@ public:
 			   const btSolverPools& pools);
 
 	int getNumLayers() const { return m_numLayers; }
+	/// D18, before setup: a contact point Bullet created this step (it replaced one of the
+	/// manifold's points or joined them) starts from no impulse. Where the pair's points together
+	/// carried T last step and carry less now, and the pair rests (every new point's relative
+	/// velocity below restSpeed, m/s), the new points share the rest, felt by both bodies.
+	void restorePairLoads(btPersistentManifold** manifolds, int numManifolds, btScalar restSpeed);
+	/// After the finish: each manifold's total normal impulse, for the next step.
+	void recordPairLoads(btPersistentManifold** manifolds, int numManifolds);
+	/// The world's step ended.
+	void endStep();
 	/// Sweeps of the joint rows in their layer (at least the layer's own count).
 	void setJointSweeps(int sweeps) { m_jointSweeps = sweeps; }
 
@@ -153,6 +166,14 @@ private:
 	btAlignedObjectArray<btVector3> m_hull, m_hullChain;  // support points in the plane, their convex hull
 	btAlignedObjectArray<btScalar> m_pushSpeed;  // per graph node: fastest approach of a body whose load it got (m/s)
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
+	struct btPairLoad
+	{
+		const void* m_body0;
+		const void* m_body1;
+		btScalar m_total;
+	};
+	// Per manifold (a key only, checked against its bodies: a pooled manifold may serve another pair).
+	std::unordered_map<const void*, btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 };
 

@@ -102,6 +102,7 @@ void btShockPropagationConstraintSolver::prepareSolve(int numBodies, int numMani
 void btShockPropagationConstraintSolver::allSolved(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
 {
 	btSequentialImpulseConstraintSolver::allSolved(info, debugDrawer);
+	m_passes->endStep();
 	if (m_solveGroupCalls == 0)
 	{
 		throw std::logic_error(
@@ -205,8 +206,12 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	stepInfo.m_splitImpulse = false;
 	if (m_settings.m_weightFeeling && m_settings.m_diagnostics.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_diagnostics.m_warmStartFactor;  // D16
 	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
-	limitWarmStart(info);
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
+	// D18: a resting pair keeps its load when Bullet replaces its points (within the weight pass's
+	// convergence speed: the same scale of "at rest").
+	if (m_settings.m_weightFeeling && m_manifolds.size())
+		m_passes->restorePairLoads(&m_manifolds[0], m_manifolds.size(), m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep);
+	limitWarmStart(info);
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
 	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
 	solveGroupCacheFriendlySetup(bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints, m_constraints.size(), stepInfo, debugDrawer);
@@ -274,6 +279,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	clock.reset();
 	m_passes->storeFeltShares(pools, weightFeeling);
 	solveGroupCacheFriendlyFinish(bodies, m_bodies.size(), stepInfo);
+	if (m_settings.m_weightFeeling && m_manifolds.size()) m_passes->recordPairLoads(&m_manifolds[0], m_manifolds.size());
 	correctPositions(info, false, true);
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }
