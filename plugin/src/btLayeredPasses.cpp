@@ -586,8 +586,8 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 	for (int i = 0; i < numManifolds; ++i)
 	{
 		btPersistentManifold* m = manifolds[i];
-		const auto found = m_pairLoadsLastStep.find(m);
-		if (found == m_pairLoadsLastStep.end() || found->second.m_body0 != m->getBody0() || found->second.m_body1 != m->getBody1()) continue;
+		const btPairLoad* found = findPairLoad(m);
+		if (!found || found->m_body0 != m->getBody0() || found->m_body1 != m->getBody1()) continue;
 		btScalar carried = 0;
 		int fresh = 0;
 		for (int j = 0; j < m->getNumContacts(); ++j)
@@ -596,7 +596,7 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 			carried += cp.m_appliedImpulse;
 			if (cp.getLifeTime() <= 1 && cp.m_appliedImpulse == btScalar(0)) ++fresh;
 		}
-		const btScalar missing = found->second.m_total - carried;
+		const btScalar missing = found->m_total - carried;
 		// A pair whose points are all new is a new contact (a landing, a bounce): its last load was
 		// no resting load. Only points that replace or join persisting ones inherit.
 		if (fresh == 0 || fresh == m->getNumContacts() || !(missing > btScalar(0))) continue;
@@ -631,12 +631,28 @@ void btLayeredPasses::recordPairLoads(btPersistentManifold** manifolds, int numM
 		const btPersistentManifold* m = manifolds[i];
 		btScalar total = 0;
 		for (int j = 0; j < m->getNumContacts(); ++j) total += m->getContactPoint(j).m_appliedImpulse;
-		m_pairLoadsThisStep[m] = btPairLoad{m->getBody0(), m->getBody1(), total};
+		m_pairLoadsThisStep.push_back(btPairLoad{m, m->getBody0(), m->getBody1(), total});
 	}
 }
 
 void btLayeredPasses::endStep()
 {
-	m_pairLoadsLastStep.swap(m_pairLoadsThisStep);
-	m_pairLoadsThisStep.clear();
+	m_pairLoadsLastStep.copyFromArray(m_pairLoadsThisStep);  // within the capacity: no allocation once settled
+	m_pairLoadsThisStep.resize(0);
+	if (m_pairLoadsLastStep.size() > 1)
+		m_pairLoadsLastStep.quickSort([](const btPairLoad& a, const btPairLoad& b) { return a.m_manifold < b.m_manifold; });
+}
+
+const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* manifold) const
+{
+	int low = 0, high = m_pairLoadsLastStep.size() - 1;
+	while (low <= high)
+	{
+		const int mid = (low + high) / 2;
+		const void* key = m_pairLoadsLastStep[mid].m_manifold;
+		if (key == manifold) return &m_pairLoadsLastStep[mid];
+		if (key < manifold) low = mid + 1;
+		else high = mid - 1;
+	}
+	return 0;
 }

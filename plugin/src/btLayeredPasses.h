@@ -20,8 +20,6 @@ subject to the following restrictions:
 #include "btLoadTransfer.h"
 #include "btWithheldReactions.h"
 
-#include <unordered_map>
-
 class btPersistentManifold;
 
 class btStackLayers;
@@ -168,12 +166,15 @@ private:
 	btWithheldReactions m_withheld;  // per graph node: what fixation kept from it (D13)
 	struct btPairLoad
 	{
-		const void* m_body0;
+		const void* m_manifold;  // keys only, never dereferenced; checked against the bodies (a pooled
+		const void* m_body0;     // manifold may serve another pair next step)
 		const void* m_body1;
 		btScalar m_total;
 	};
-	// Per manifold (a key only, checked against its bodies: a pooled manifold may serve another pair).
-	std::unordered_map<const void*, btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
+	// D18: this step's records (appended per group) and last step's (sorted by manifold for lookup).
+	// Arrays keep their capacity, so a settled world's steps allocate nothing.
+	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
+	const btPairLoad* findPairLoad(const void* manifold) const;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 };
 
