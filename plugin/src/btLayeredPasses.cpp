@@ -43,6 +43,17 @@ inline void noteResidual(btScalar& worst, btScalar residual)
 	if (r2 > worst) worst = r2;  // NaN (a row whose ends are both immovable: 0 / 0) is no change
 }
 
+/// D18: a point Bullet created this step (its lifetime starts at the step's refresh) that carries
+/// no impulse yet.
+bool isNewPoint(const btManifoldPoint& cp) { return cp.getLifeTime() <= 1 && cp.m_appliedImpulse == btScalar(0); }
+
+btScalar totalNormalImpulse(const btPersistentManifold& m)
+{
+	btScalar total = 0;
+	for (int j = 0; j < m.getNumContacts(); ++j) total += m.getContactPoint(j).m_appliedImpulse;
+	return total;
+}
+
 int clampLayer(int layer, int numLayers)
 {
 	return (layer >= 0 && layer < numLayers) ? layer : 0;
@@ -588,15 +599,9 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 		btPersistentManifold* m = manifolds[i];
 		const btPairLoad* found = findPairLoad(m);
 		if (!found || found->m_body0 != m->getBody0() || found->m_body1 != m->getBody1()) continue;
-		btScalar carried = 0;
 		int fresh = 0;
-		for (int j = 0; j < m->getNumContacts(); ++j)
-		{
-			const btManifoldPoint& cp = m->getContactPoint(j);
-			carried += cp.m_appliedImpulse;
-			if (cp.getLifeTime() <= 1 && cp.m_appliedImpulse == btScalar(0)) ++fresh;
-		}
-		const btScalar missing = found->m_total - carried;
+		for (int j = 0; j < m->getNumContacts(); ++j) fresh += isNewPoint(m->getContactPoint(j)) ? 1 : 0;
+		const btScalar missing = found->m_total - totalNormalImpulse(*m);
 		// A pair whose points are all new is a new contact (a landing, a bounce): its last load was
 		// no resting load. Only points that replace or join persisting ones inherit.
 		if (fresh == 0 || fresh == m->getNumContacts() || !(missing > btScalar(0))) continue;
@@ -608,7 +613,7 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 		for (int j = 0; j < m->getNumContacts() && resting; ++j)
 		{
 			const btManifoldPoint& cp = m->getContactPoint(j);
-			if (cp.getLifeTime() > 1 || cp.m_appliedImpulse != btScalar(0)) continue;
+			if (!isNewPoint(cp)) continue;
 			const btVector3 va = a ? a->getVelocityInLocalPoint(cp.getPositionWorldOnA() - a->getCenterOfMassPosition()) : btVector3(0, 0, 0);
 			const btVector3 vb = b ? b->getVelocityInLocalPoint(cp.getPositionWorldOnB() - b->getCenterOfMassPosition()) : btVector3(0, 0, 0);
 			resting = (va - vb).length() < restSpeed;
@@ -617,7 +622,7 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 		for (int j = 0; j < m->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m->getContactPoint(j);
-			if (cp.getLifeTime() > 1 || cp.m_appliedImpulse != btScalar(0)) continue;
+			if (!isNewPoint(cp)) continue;
 			cp.m_appliedImpulse = missing / btScalar(fresh);
 			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
 		}
@@ -629,9 +634,7 @@ void btLayeredPasses::recordPairLoads(btPersistentManifold** manifolds, int numM
 	for (int i = 0; i < numManifolds; ++i)
 	{
 		const btPersistentManifold* m = manifolds[i];
-		btScalar total = 0;
-		for (int j = 0; j < m->getNumContacts(); ++j) total += m->getContactPoint(j).m_appliedImpulse;
-		m_pairLoadsThisStep.push_back(btPairLoad{m, m->getBody0(), m->getBody1(), total});
+		m_pairLoadsThisStep.push_back(btPairLoad{m, m->getBody0(), m->getBody1(), totalNormalImpulse(*m)});
 	}
 }
 

@@ -198,6 +198,8 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	else if (m_settings.m_globalIterations < 0)
 		globalSweeps = 0;
 	const int layerSweeps = sweepCount(m_settings.m_layerIterations, worldIterations);
+	// The weight pass's convergence speed (D16), also D18's scale of "at rest" (m/s).
+	const btScalar convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
 
 	// One setup for the step, as a stock step: the app's time step and settings. Penetration is
 	// the position correction's (D6): no Baumgarte term, no split impulse.
@@ -210,7 +212,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	// D18: a resting pair keeps its load when Bullet replaces its points (within the weight pass's
 	// convergence speed: the same scale of "at rest").
 	if (m_settings.m_weightFeeling && m_manifolds.size())
-		m_passes->restorePairLoads(&m_manifolds[0], m_manifolds.size(), m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep);
+		m_passes->restorePairLoads(&m_manifolds[0], m_manifolds.size(), convergedSpeed);
 	limitWarmStart(info);
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
 	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
@@ -266,7 +268,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_slack = m_settings.m_diagnostics.m_weightGuardSlack;
 		weight.m_tipGain = m_settings.m_diagnostics.m_weightGuardTipping;
 		weight.m_tipMargin = m_settings.m_diagnostics.m_weightGuardTipMargin;
-		weight.m_convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
+		weight.m_convergedSpeed = convergedSpeed;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
