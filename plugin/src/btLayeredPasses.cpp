@@ -14,6 +14,8 @@ subject to the following restrictions:
 
 #include "btLayeredPasses.h"
 
+#include "btSupportBlock.h"
+
 #include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
@@ -246,13 +248,26 @@ btScalar btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSo
 	return worst;
 }
 
-void btLayeredPasses::solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools)
+int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools)
 {
-	if (layer < 0 || layer >= m_numLayers) return;
+	if (layer < 0 || layer >= m_numLayers) return 0;
 	fixate(layer, params, pools);
-	const int total = hasJoints(layer, pools) ? btMax(sweeps, m_jointSweeps) : sweeps;
-	for (int iteration = 0; iteration < total; ++iteration) sweep(layer, iteration, sweeps, pools);
+	// D19: each free body's block of rows against its fixated supports, solved in one step.
+	if (sweeps.m_block) solveSupportRows(layer, pools, BT_SUPPORT_BLOCK);
+	const bool joints = hasJoints(layer, pools);
+	const int total = joints ? btMax(sweeps.m_max, m_jointSweeps) : sweeps.m_max;
+	// Then the sweeps: at least m_min, until one changes no row's velocity by more than the
+	// convergence speed (D19), at most m_max (joints that ask for more get them).
+	const btScalar converged2 = sweeps.m_convergedSpeed * sweeps.m_convergedSpeed;
+	int run = 0;
+	for (int iteration = 0; iteration < total; ++iteration)
+	{
+		const btScalar change = sweep(layer, iteration, sweeps.m_max, pools);
+		++run;
+		if (sweeps.m_min >= 0 && !joints && iteration + 1 >= sweeps.m_min && change <= converged2) break;
+	}
 	release(layer, withhold, pools);
+	return run;
 }
 
 void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScalar warmstartingFactor, btScalar coupling)
@@ -346,7 +361,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			m_before[i].m_loadLinear = id < 0 ? btVector3(0, 0, 0) : pools.m_bodies[id].internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
 		}
 		fixate(k, params, pools);
-		if (weight.m_transfer) transferLoads(k, pools);
+		if (weight.m_transfer) solveSupportRows(k, pools, BT_SUPPORT_LOAD_TRANSFER);
 		// Sweeps until the re-solve converges (no row's velocity changed by more than
 		// m_convergedSpeed in the last sweep), at most `sweeps`.
 		const btScalar converged2 = weight.m_convergedSpeed * weight.m_convergedSpeed;
@@ -418,7 +433,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	return total;
 }
 
-void btLayeredPasses::transferLoads(int layer, const btSolverPools& pools)
+void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, btSupportSolve solve)
 {
 	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
 	if (numFree == 0) return;
@@ -476,7 +491,8 @@ void btLayeredPasses::transferLoads(int layer, const btSolverPools& pools)
 		m_localOf[id] = -1;
 		btSolverBody& b = pools.m_bodies[id];
 		const int n = m_transferStart[i + 1] - m_transferStart[i];
-		if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
+		if (n > 0 && solve == BT_SUPPORT_BLOCK) btSolveSupportBlock(b, pools.m_bodies, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
+		else if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
 	}
 }
 

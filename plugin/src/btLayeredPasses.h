@@ -35,6 +35,15 @@ struct btWeightPassParams
 	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
 };
 
+/// The up pass's schedule for each layer (D7, D19).
+struct btLayerSweeps
+{
+	int m_max = 10;                ///< most sweeps (the app's N)
+	int m_min = -1;                ///< fewest sweeps before the convergence test ends the layer; negative: always m_max
+	btScalar m_convergedSpeed = 0; ///< m/s: a sweep that changed no row's velocity by more ends the layer
+	bool m_block = false;          ///< solve each free body's support rows as one block first (btSupportBlock.h)
+};
+
 /// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
 struct btSolverPools
 {
@@ -83,9 +92,10 @@ public:
 	/// Sweeps of the joint rows in their layer (at least the layer's own count).
 	void setJointSweeps(int sweeps) { m_jointSweeps = sweeps; }
 
-	/// Sweeps of layer k with its lower bodies fixated. withhold: record the reactions fixation
-	/// keeps from the lower bodies, for solveWeightPass.
-	void solveLayer(int layer, int sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools);
+	/// Layer k with its lower bodies fixated: the support blocks (D19, if asked), then sweeps.
+	/// withhold: record the reactions fixation keeps from the lower bodies, for solveWeightPass.
+	/// Returns the sweeps run.
+	int solveLayer(int layer, const btLayerSweeps& sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools);
 
 	/// After setup, before any pass: Bullet's warm start applied each contact row's cached total T
 	/// to both ends; the lower (fixated) end felt only the share F of it last step (the global
@@ -112,8 +122,15 @@ private:
 	void release(int layer, bool withhold, const btSolverPools& pools);
 	/// One sweep of the layer's rows; returns the largest squared change of a row's velocity.
 	btScalar sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
-	/// Load transfer (btLoadTransfer.h) for every free body of the layer, from the deltas in m_before.
-	void transferLoads(int layer, const btSolverPools& pools);
+	/// For every free body of the layer, its rows against fixated or static bodies: the load
+	/// transfer of the weight pass (btLoadTransfer.h, from the deltas in m_before) or the support
+	/// block solve of the up pass (btSupportBlock.h).
+	enum btSupportSolve
+	{
+		BT_SUPPORT_LOAD_TRANSFER,
+		BT_SUPPORT_BLOCK
+	};
+	void solveSupportRows(int layer, const btSolverPools& pools, btSupportSolve solve);
 	/// D16 guard: whether the body's weight and the load withheld for it act outside the convex
 	/// hull of its support points (statics: it must tip).
 	bool loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin);

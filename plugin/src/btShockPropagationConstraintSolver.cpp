@@ -68,6 +68,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	setWeighting(settings.m_weighting);
 	m_settings.m_globalIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_globalIterations);
 	m_settings.m_layerIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_layerIterations);
+	m_settings.m_layerMinIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_layerMinIterations);
 	m_settings.m_correctionIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_correctionIterations);
 	if (!(settings.m_diagnostics.m_correctionFraction >= 0 && settings.m_diagnostics.m_correctionFraction <= 1)) m_settings.m_diagnostics.m_correctionFraction = defaults.m_diagnostics.m_correctionFraction;
 	if (!isFiniteScalar(settings.m_correctionSlop)) m_settings.m_correctionSlop = defaults.m_correctionSlop;
@@ -256,7 +257,12 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	// Joints with more iterations than the app's (btTypedConstraint::setOverrideNumSolverIterations)
 	// get them, as in a stock solve: their rows are in layer 0.
 	m_passes->setJointSweeps(btMax(layerSweeps, m_maxOverrideNumSolverIterations));
-	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_passes->solveLayer(k, layerSweeps, params, weightFeeling, pools);
+	btLayerSweeps sweeps;
+	sweeps.m_max = layerSweeps;
+	sweeps.m_block = m_settings.m_diagnostics.m_supportBlocks;
+	sweeps.m_min = m_settings.m_layerMinIterations;
+	sweeps.m_convergedSpeed = convergedSpeed;
+	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_stats.m_numLayerSweeps += m_passes->solveLayer(k, sweeps, params, weightFeeling, pools);
 	m_stats.m_timeLayersMs += millisecondsSince(clock);
 	if (weightFeeling)
 	{

@@ -164,6 +164,10 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_weightConvergence), "wconv", [](double c) { return c >= 0; }, ">= 0"),
 		numberFlag("--tip-margin", "M,...", "plugin: weight-pass guard, share of the support's size a load must act outside of to tip a body (default 0.1; D16)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipMargin), "tipmargin", [](double m) { return m >= 0; }, ">= 0"),
+		switchFlag("--no-support-blocks", "plugin: no support block solve before a layer's sweeps (D19 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
+		numberFlag("--layer-min-sweeps", "N,...", "plugin: fewest sweeps per layer before a converged layer ends, -1 = always the app's N (default 2; D19)",
+				   field(&btShockPropagationSettings::m_layerMinIterations), "minsweeps", [](double n) { return n >= 1 || n == -1; }, ">= 1 or -1"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
 	};

@@ -1,0 +1,199 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "btSupportBlock.h"
+
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+
+namespace
+{
+const int kMaxBlockRows = 64;  // a body with more support rows keeps PGS alone
+
+/// Cholesky of a symmetric positive 6 x 6 matrix after Jacobi scaling (so metres and radians
+/// weigh alike); false if a scaled pivot falls below minPivot (too close to rank deficient).
+bool factorScaled(const btScalar A[6][6], btScalar L[6][6], btScalar scale[6], btScalar minPivot)
+{
+	for (int i = 0; i < 6; ++i)
+	{
+		if (!(A[i][i] > btScalar(0))) return false;
+		scale[i] = btScalar(1) / btSqrt(A[i][i]);
+	}
+	for (int i = 0; i < 6; ++i)
+		for (int j = 0; j <= i; ++j)
+		{
+			btScalar sum = A[i][j] * scale[i] * scale[j];
+			for (int k = 0; k < j; ++k) sum -= L[i][k] * L[j][k];
+			if (i == j)
+			{
+				if (!(sum > minPivot)) return false;
+				L[i][i] = btSqrt(sum);
+			}
+			else
+				L[i][j] = sum / L[j][j];
+		}
+	return true;
+}
+
+/// x = A^-1 b with the factor of factorScaled.
+void solveFactored(const btScalar L[6][6], const btScalar scale[6], const btScalar b[6], btScalar x[6])
+{
+	btScalar y[6];
+	for (int i = 0; i < 6; ++i)
+	{
+		btScalar sum = b[i] * scale[i];
+		for (int k = 0; k < i; ++k) sum -= L[i][k] * y[k];
+		y[i] = sum / L[i][i];
+	}
+	for (int i = 5; i >= 0; --i)
+	{
+		btScalar sum = y[i];
+		for (int k = i + 1; k < 6; ++k) sum -= L[k][i] * x[k];
+		x[i] = sum / L[i][i];
+	}
+	for (int i = 0; i < 6; ++i) x[i] *= scale[i];
+}
+
+/// The row's Jacobian on the body (J_b) and on its other, immovable end (J_o).
+struct btRowSides
+{
+	const btVector3& m_linear;
+	const btVector3& m_angular;
+	const btVector3& m_otherLinear;
+	const btVector3& m_otherAngular;
+};
+
+btRowSides sidesOf(const btLoadTransferRow& r)
+{
+	const btSolverConstraint& c = *r.m_row;
+	return r.m_sideA ? btRowSides{c.m_contactNormal1, c.m_relpos1CrossNormal, c.m_contactNormal2, c.m_relpos2CrossNormal}
+					 : btRowSides{c.m_contactNormal2, c.m_relpos2CrossNormal, c.m_contactNormal1, c.m_relpos1CrossNormal};
+}
+}  // namespace
+
+bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolverBody>& bodies, const btLoadTransferRow* rows, int numRows,
+						 const btConstraintArray& contacts)
+{
+	const btRigidBody* rb = body.m_originalBody;
+	if (!rb || numRows < 6 || numRows > kMaxBlockRows || !(rb->getInvMass() > btScalar(0))) return false;
+	// Bullet's W J^T carries the factors; the momentum formula below assumes none.
+	if (body.m_linearFactor != btVector3(1, 1, 1) || body.m_angularFactor != btVector3(1, 1, 1)) return false;
+	const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
+	if (!(btFabs(invInertia.determinant()) > SIMD_EPSILON)) return false;
+
+	// The resting rows, their errors e (m/s) and the normal equations A = J^T J, J^T e.
+	btScalar A[6][6] = {};
+	btScalar Je[6] = {};
+	bool use[kMaxBlockRows];
+	btScalar error[kMaxBlockRows];
+	int used = 0;
+	for (int i = 0; i < numRows; ++i)
+	{
+		use[i] = false;
+		const btSolverConstraint& c = *rows[i].m_row;
+		if (c.m_jacDiagABInv == btScalar(0)) continue;
+		const btSolverConstraint* contact = &c;
+		if (!rows[i].m_contact)
+		{
+			if (c.m_frictionIndex < 0 || c.m_frictionIndex >= contacts.size()) continue;
+			contact = &contacts[c.m_frictionIndex];
+		}
+		if (!(contact->m_appliedImpulse > btScalar(0))) continue;  // not a resting contact
+		const btRowSides s = sidesOf(rows[i]);
+		const btSolverBody& other = bodies[rows[i].m_sideA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
+		btSolverBody& self = body;  // Bullet's delta accessors are not const
+		btSolverBody& fixed = const_cast<btSolverBody&>(other);
+		// What Bullet's kernel would turn into an impulse, in velocity units.
+		const btScalar e = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv -
+						   s.m_otherLinear.dot(fixed.internalGetDeltaLinearVelocity()) - s.m_otherAngular.dot(fixed.internalGetDeltaAngularVelocity()) -
+						   s.m_linear.dot(self.internalGetDeltaLinearVelocity()) - s.m_angular.dot(self.internalGetDeltaAngularVelocity());
+		if (!(e == e)) continue;
+		const btScalar j[6] = {s.m_linear[0], s.m_linear[1], s.m_linear[2], s.m_angular[0], s.m_angular[1], s.m_angular[2]};
+		for (int a = 0; a < 6; ++a)
+		{
+			Je[a] += j[a] * e;
+			for (int b = 0; b <= a; ++b) A[a][b] += j[a] * j[b];
+		}
+		use[i] = true;
+		error[i] = e;
+		++used;
+	}
+	if (used < 6) return false;
+	for (int a = 0; a < 6; ++a)
+		for (int b = a + 1; b < 6; ++b) A[a][b] = A[b][a];
+	btScalar L[6][6] = {}, scale[6];
+	if (!factorScaled(A, L, scale, btScalar(1e-3))) return false;
+
+	// Velocity change (least squares), its momentum, and the impulses that deliver it.
+	btScalar du[6], p[6], z[6];
+	solveFactored(L, scale, Je, du);
+	const btVector3 linearMomentum = btVector3(du[0], du[1], du[2]) / rb->getInvMass();
+	const btVector3 angularMomentum = invInertia.inverse() * btVector3(du[3], du[4], du[5]);
+	for (int a = 0; a < 3; ++a)
+	{
+		p[a] = linearMomentum[a];
+		p[3 + a] = angularMomentum[a];
+	}
+	solveFactored(L, scale, p, z);
+	const btVector3 zLinear(z[0], z[1], z[2]), zAngular(z[3], z[4], z[5]);
+
+	// Projected onto the limits: normals first, friction bounded by its normal's new impulse.
+	btScalar next[kMaxBlockRows];
+	for (int pass = 0; pass < 2; ++pass)
+		for (int i = 0; i < numRows; ++i)
+		{
+			if (!use[i] || rows[i].m_contact != (pass == 0)) continue;
+			const btSolverConstraint& c = *rows[i].m_row;
+			const btRowSides s = sidesOf(rows[i]);
+			btScalar after = c.m_appliedImpulse + s.m_linear.dot(zLinear) + s.m_angular.dot(zAngular);
+			if (rows[i].m_contact)
+				after = btMax(btScalar(0), after);
+			else
+			{
+				btScalar normal = contacts[c.m_frictionIndex].m_appliedImpulse;
+				for (int k = 0; k < numRows; ++k)
+					if (use[k] && rows[k].m_contact && rows[k].m_row == &contacts[c.m_frictionIndex]) normal = next[k];
+				const btScalar bound = c.m_friction * btMax(btScalar(0), normal);
+				after = btMax(-bound, btMin(bound, after));
+			}
+			next[i] = (after == after) ? after : btScalar(c.m_appliedImpulse);
+		}
+
+	// Kept only if it lowers 1/2 d^T J W J^T d - d . e (W: the body's inverse mass and inertia).
+	btVector3 impulseLinear(0, 0, 0), impulseAngular(0, 0, 0);
+	btScalar work = 0;
+	for (int i = 0; i < numRows; ++i)
+	{
+		if (!use[i]) continue;
+		const btRowSides s = sidesOf(rows[i]);
+		const btScalar d = next[i] - rows[i].m_row->m_appliedImpulse;
+		impulseLinear += s.m_linear * d;
+		impulseAngular += s.m_angular * d;
+		work += d * error[i];
+	}
+	const btScalar objective =
+		btScalar(0.5) * (impulseLinear.length2() * rb->getInvMass() + impulseAngular.dot(invInertia * impulseAngular)) - work;
+	if (!(objective < btScalar(0))) return false;
+
+	for (int i = 0; i < numRows; ++i)
+	{
+		if (!use[i]) continue;
+		btSolverConstraint& c = *rows[i].m_row;
+		const btScalar change = next[i] - c.m_appliedImpulse;
+		if (change == btScalar(0)) continue;
+		c.m_appliedImpulse = next[i];
+		body.internalApplyImpulse((rows[i].m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass(),
+								  rows[i].m_sideA ? c.m_angularComponentA : c.m_angularComponentB, change);
+	}
+	return true;
+}
