@@ -14,6 +14,7 @@ subject to the following restrictions:
 
 #include "btSupportBlock.h"
 
+#include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
 namespace
@@ -108,7 +109,11 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 			if (c.m_frictionIndex < 0 || c.m_frictionIndex >= contacts.size()) continue;
 			contact = &contacts[c.m_frictionIndex];
 		}
-		if (!(contact->m_appliedImpulse > btScalar(0))) continue;  // not a resting contact
+		if (!(contact->m_appliedImpulse > btScalar(0))) continue;  // not in contact
+		// A contact pushing now that carried nothing last step is an impact or a new load: the
+		// body is not at rest, and its block is PGS's.
+		const btManifoldPoint* point = static_cast<const btManifoldPoint*>(contact->m_originalContactPoint);
+		if (!point || !(point->m_appliedImpulse > btScalar(0))) return false;
 		const btRowSides s = sidesOf(rows[i]);
 		const btSolverBody& other = bodies[rows[i].m_sideA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
 		btSolverBody& self = body;  // Bullet's delta accessors are not const

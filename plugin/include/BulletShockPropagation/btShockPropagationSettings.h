@@ -140,7 +140,7 @@ struct btShockPropagationDiagnostics
 	/// the hull of its support points a load must act before a body is taken to tip. The split of a
 	/// load between a manifold's points is not determined by statics; at 0.01 the round tower at
 	/// 100 iterations "tips" bricks whose loads sit at their supports' edges (docs/design.md, D16).
-	btScalar m_weightGuardTipMargin = btScalar(0.1);
+	btScalar m_weightGuardTipMargin = btScalar(0);
 
 	/// Warm-start factor of stacked groups (unitless, 0..1). Bullet scales each contact's cached
 	/// impulse by the app's m_warmstartingFactor (0.85 by default), a damping for plain PGS. Here
