@@ -152,26 +152,25 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	solveFactored(L, scale, p, z);
 	const btVector3 zLinear(z[0], z[1], z[2]), zAngular(z[3], z[4], z[5]);
 
-	// Projected onto the limits: normals first, friction bounded by its normal's new impulse.
-	btScalar next[kMaxBlockRows];
+	// Projected onto the limits: normals first, friction bounded by its normal's new impulse. The
+	// new impulses are written into the rows (the old ones kept) so friction reads its normal's.
+	btScalar old[kMaxBlockRows];
 	for (int pass = 0; pass < 2; ++pass)
 		for (int i = 0; i < numRows; ++i)
 		{
 			if (!use[i] || rows[i].m_contact != (pass == 0)) continue;
-			const btSolverConstraint& c = *rows[i].m_row;
+			btSolverConstraint& c = *rows[i].m_row;
 			const btRowSides s = sidesOf(rows[i]);
-			btScalar after = c.m_appliedImpulse + s.m_linear.dot(zLinear) + s.m_angular.dot(zAngular);
+			old[i] = c.m_appliedImpulse;
+			btScalar after = old[i] + s.m_linear.dot(zLinear) + s.m_angular.dot(zAngular);
 			if (rows[i].m_contact)
 				after = btMax(btScalar(0), after);
 			else
 			{
-				btScalar normal = contacts[c.m_frictionIndex].m_appliedImpulse;
-				for (int k = 0; k < numRows; ++k)
-					if (use[k] && rows[k].m_contact && rows[k].m_row == &contacts[c.m_frictionIndex]) normal = next[k];
-				const btScalar bound = c.m_friction * btMax(btScalar(0), normal);
+				const btScalar bound = c.m_friction * btMax(btScalar(0), btScalar(contacts[c.m_frictionIndex].m_appliedImpulse));
 				after = btMax(-bound, btMin(bound, after));
 			}
-			next[i] = (after == after) ? after : btScalar(c.m_appliedImpulse);
+			if (after == after) c.m_appliedImpulse = after;
 		}
 
 	// Kept only if it lowers 1/2 d^T J W J^T d - d . e (W: the body's inverse mass and inertia).
@@ -181,24 +180,27 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	{
 		if (!use[i]) continue;
 		const btRowSides s = sidesOf(rows[i]);
-		const btScalar d = next[i] - rows[i].m_row->m_appliedImpulse;
+		const btScalar d = btScalar(rows[i].m_row->m_appliedImpulse) - old[i];
 		impulseLinear += s.m_linear * d;
 		impulseAngular += s.m_angular * d;
 		work += d * error[i];
 	}
 	const btScalar objective =
 		btScalar(0.5) * (impulseLinear.length2() * rb->getInvMass() + impulseAngular.dot(invInertia * impulseAngular)) - work;
-	if (!(objective < btScalar(0))) return false;
-
+	const bool descent = objective < btScalar(0);
 	for (int i = 0; i < numRows; ++i)
 	{
 		if (!use[i]) continue;
 		btSolverConstraint& c = *rows[i].m_row;
-		const btScalar change = next[i] - c.m_appliedImpulse;
+		if (!descent)
+		{
+			c.m_appliedImpulse = old[i];
+			continue;
+		}
+		const btScalar change = btScalar(c.m_appliedImpulse) - old[i];
 		if (change == btScalar(0)) continue;
-		c.m_appliedImpulse = next[i];
 		body.internalApplyImpulse((rows[i].m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass(),
 								  rows[i].m_sideA ? c.m_angularComponentA : c.m_angularComponentB, change);
 	}
-	return true;
+	return descent;
 }
