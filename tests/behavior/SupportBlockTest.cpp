@@ -28,16 +28,20 @@ TEST(SupportBlocks, RestingLayersConvergeInTheFewestSweeps)
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
-TEST(SupportBlocks, WithoutThemEarlyEndingLayersLoseTheTowerOf40)
+TEST(SupportBlocks, WithoutThemEarlyEndingLayersLetTheTowerOf40Creep)
 {
 	// What the block is for: PGS alone converges slowly (rho^N), so a sweep that changes little is
-	// not a converged layer. Ended on that test without the block, the tower of 40 falls (measured
-	// at 0.78 s); with it (the default) it stands (Stacking.VerticalStackOf40...).
-	harness::SolverSpec solver = spec::shock();
-	solver.settings.m_diagnostics.m_supportBlocks = false;
-	harness::Trial run(solver, "tower", {{"n", 40}});
-	run.run(5.0);
-	EXPECT_GT(run.maxDrift(), 0.5) << "m: expected the tower to fall without the support blocks";
+	// not a converged layer. Ended on that test without the block, the tower of 40 creeps: measured
+	// over 10 s, it falls at 0.78 s in float and moves 5.8 mm in double; with the block (the default)
+	// it does not move (0.00 mm in both).
+	harness::SolverSpec without = spec::shock();
+	without.settings.m_diagnostics.m_supportBlocks = false;
+	harness::Trial creeping(without, "tower", {{"n", 40}});
+	harness::Trial standing(spec::shock(), "tower", {{"n", 40}});
+	creeping.run(10.0);
+	standing.run(10.0);
+	EXPECT_GT(creeping.maxDrift(), 0.002) << "m: expected the tower to creep without the support blocks";
+	EXPECT_LT(standing.maxDrift(), 0.0002) << "m";
 }
 
 TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
