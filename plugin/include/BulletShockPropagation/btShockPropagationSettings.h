@@ -111,8 +111,8 @@ struct btShockPropagationDiagnostics
 	/// are solved as one block (a 6 x 6 least-squares solve of the rows' velocity errors, the
 	/// smallest impulses that give it, projected onto the rows' limits and kept only if it lowers
 	/// the rows' PGS objective). A resting layer then converges within m_layerMinIterations
-	/// sweeps where PGS alone needs all N. Off with early-ending layers, the tower of 40 falls
-	/// (measured in docs/design.md, D19).
+	/// sweeps where PGS alone needs all N. Off with early-ending layers, the tower of 40 falls in
+	/// float (0.78 s) and creeps in double (measured in docs/design.md, D19).
 	bool m_supportBlocks = true;
 
 	/// D16 convergence test of a weight-pass re-solve, as a share of |g| dt (unitless): a re-solve
