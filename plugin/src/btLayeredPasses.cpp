@@ -16,6 +16,8 @@ subject to the following restrictions:
 
 #include "btSupportBlock.h"
 
+#include "BulletCollision/CollisionShapes/btCollisionShape.h"
+
 #include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
@@ -360,6 +362,13 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
 			m_before[i].m_loadLinear = id < 0 ? btVector3(0, 0, 0) : pools.m_bodies[id].internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
 		}
+		// D20: loads a re-solve would call converged before its first sweep are taken by the
+		// support rows alone (load transfer) and the changes handed on.
+		if (weight.m_transfer && weight.m_transferSmallLoads && loadsBelow(k, pools, weight.m_convergedSpeed))
+		{
+			transferOnly(k, pools);
+			continue;
+		}
 		fixate(k, params, pools);
 		if (weight.m_transfer) solveSupportRows(k, pools, BT_SUPPORT_LOAD_TRANSFER);
 		// Sweeps until the re-solve converges (no row's velocity changed by more than
@@ -431,6 +440,70 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	}
 	m_withJoints = true;
 	return total;
+}
+
+bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar speed) const
+{
+	// Every free body's velocity change from its load, at its farthest point: linear plus angular
+	// times the bounding radius of its shape.
+	const int numFree = m_layers->getNumFreeBodies(layer);
+	for (int i = 0; i < numFree; ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
+		if (id < 0) continue;
+		btSolverBody& b = pools.m_bodies[id];
+		btScalar radius = 0;
+		if (b.m_originalBody)
+		{
+			btVector3 centre;
+			b.m_originalBody->getCollisionShape()->getBoundingSphere(centre, radius);
+		}
+		const btVector3 dw = b.internalGetDeltaAngularVelocity() - m_before[i].m_deltaAngular;
+		if (!(m_before[i].m_loadLinear.length() + dw.length() * radius <= speed)) return false;
+	}
+	return true;
+}
+
+void btLayeredPasses::transferOnly(int layer, const btSolverPools& pools)
+{
+	// The lower bodies immovable (inverse mass zero, rows untouched: the load transfer reads only
+	// the free end of each row), the support rows take the loads, and each row's change is
+	// withheld for the layer below as a re-solve's would be (release()).
+	markFixated(layer, 1);
+	m_impulseBefore.resize(0);
+	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) { m_impulseBefore.push_back(c.m_appliedImpulse); });
+	m_savedInvMass.resize(0);
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id < 0) continue;
+		m_savedInvMass.push_back(pools.m_bodies[id].internalGetInvMass());
+		pools.m_bodies[id].internalSetInvMass(btVector3(0, 0, 0));
+	}
+	solveSupportRows(layer, pools, BT_SUPPORT_LOAD_TRANSFER);
+	int saved = 0;
+	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
+		if (id < 0) continue;
+		pools.m_bodies[id].internalSetInvMass(m_savedInvMass[saved++]);
+	}
+	int row = 0;
+	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind kind) {
+		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
+		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
+		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
+		if (fixA == fixB) return;
+		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
+		if (change == btScalar(0)) return;
+		withholdFromFixated(c, fixA, change);
+		if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
+		{
+			const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+			if (node >= 0) m_pushSpeed[node] = btMax(m_pushSpeed[node], c.m_rhs / c.m_jacDiagABInv);
+		}
+	});
+	markFixated(layer, 0);
 }
 
 void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, btSupportSolve solve)

@@ -33,6 +33,7 @@ struct btWeightPassParams
 	btScalar m_slack = 0;             ///< a load may speed a body up by this share of its |g| dt beyond its loads' approach
 	btScalar m_tipGain = 1;           ///< a converged re-solve may speed a body that tips or slides up by this share of |g| dt
 	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
+	bool m_transferSmallLoads = true; ///< D20: loads below m_convergedSpeed are transferred, not re-solved
 };
 
 /// The up pass's schedule for each layer (D7, D19).
@@ -134,6 +135,12 @@ private:
 	/// D16 guard: whether the body's weight and the load withheld for it act outside the convex
 	/// hull of its support points (statics: it must tip).
 	bool loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin);
+	/// D20: whether every free body's load (in m_before) changes its velocity by at most `speed`
+	/// (m/s) at its farthest point.
+	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed) const;
+	/// D20: the layer's support rows take its loads (load transfer) with no re-solve; the changes
+	/// are withheld for the layer below.
+	void transferOnly(int layer, const btSolverPools& pools);
 	/// The mean normal of the body's (solver body id) supports in the layer, unit, pointing into
 	/// the body; against gravity where it has none (D16 guard).
 	btVector3 supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools) const;

@@ -275,6 +275,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_tipGain = m_settings.m_diagnostics.m_weightGuardTipping;
 		weight.m_tipMargin = m_settings.m_diagnostics.m_weightGuardTipMargin;
 		weight.m_convergedSpeed = convergedSpeed;
+		weight.m_transferSmallLoads = m_settings.m_diagnostics.m_transferSmallLoads;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,

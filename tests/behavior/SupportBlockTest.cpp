@@ -54,3 +54,30 @@ TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
 }
+
+TEST(SmallLoads, SettledTowerHandsItsWeightDownWithoutReSolves)
+{
+	// D20 (docs/design.md, section 4e): once the tower of 20 has settled, every weight-pass load is
+	// below the convergence speed, so no layer is re-solved (no weight-pass sweeps), yet the loads
+	// still reach the ground through the load transfer: it carries the tower's weight.
+	harness::Trial run(spec::shock(), "tower", {{"n", 20}});
+	run.run(1.0);
+	const btShockPropagationConstraintSolver& solver = *run.simulation().shockSolver();
+	long weightSweeps = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		run.step();
+		weightSweeps += solver.getStatistics().m_numWeightSweeps;
+	}
+	EXPECT_EQ(weightSweeps, 0);
+	EXPECT_NEAR(run.summary().groundOverWeightLastSecond, 1.0, 0.01);
+	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
+
+	// The same tower re-solving every loaded layer (D20 off) sweeps and stands alike.
+	harness::SolverSpec resolve = spec::shock();
+	resolve.settings.m_diagnostics.m_transferSmallLoads = false;
+	harness::Trial other(resolve, "tower", {{"n", 20}});
+	other.run(2.0);
+	EXPECT_GT(other.simulation().shockSolver()->getStatistics().m_numWeightSweeps, 0);
+	EXPECT_NEAR(other.summary().groundOverWeightLastSecond, 1.0, 0.01);
+}

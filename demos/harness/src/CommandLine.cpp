@@ -168,6 +168,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
 		numberFlag("--layer-min-sweeps", "N,...", "plugin: fewest sweeps per layer before a converged layer ends, -1 = always the app's N (default 2; D19)",
 				   field(&btShockPropagationSettings::m_layerMinIterations), "minsweeps", [](double n) { return n >= 1 || n == -1; }, ">= 1 or -1"),
+		switchFlag("--resolve-small-loads", "plugin: re-solve every loaded weight-pass layer, even below the convergence speed (D20 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_transferSmallLoads), false, "resolvesmall"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
 	};

@@ -115,6 +115,14 @@ struct btShockPropagationDiagnostics
 	/// float (0.78 s) and creeps in double (measured in docs/design.md, D19).
 	bool m_supportBlocks = true;
 
+	/// D20: a weight-pass layer whose loads all change its free bodies' velocities by at most the
+	/// convergence speed (m_weightConvergence |g| dt; linear change plus angular change times the
+	/// shape's bounding radius) is not re-solved: its support rows take the loads in one
+	/// least-squares step (m_loadTransfer) and the changes are handed on to the layer below, as a
+	/// re-solve that converged before its first sweep would. Saves the layer's fixation and sweep
+	/// where a settled stack hands down only bookkeeping (measured in docs/design.md, D20).
+	bool m_transferSmallLoads = true;
+
 	/// D16 convergence test of a weight-pass re-solve, as a share of |g| dt (unitless): a re-solve
 	/// whose last sweep changed no row's velocity by more than this has converged and stands
 	/// (1 mm/s at 9.81 m/s^2 and 60 Hz).
