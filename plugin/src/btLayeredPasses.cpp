@@ -442,13 +442,23 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	return total;
 }
 
-bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar speed) const
+bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar speed)
 {
-	// Every free body's velocity change from its load, at its farthest point: linear plus angular
-	// times the bounding radius of its shape.
+	// Every free body's velocity change from its load, at its farthest point (linear plus angular
+	// times the bounding radius of its shape), and what that momentum would do to each body it
+	// rests on: a heavy body's small change is a large one for a light support.
 	const int numFree = m_layers->getNumFreeBodies(layer);
-	for (int i = 0; i < numFree; ++i)
+	const int numSolverBodies = pools.m_bodies.size();
+	if (m_localOf.size() != numSolverBodies)
 	{
+		m_localOf.resize(numSolverBodies);
+		for (int i = 0; i < numSolverBodies; ++i) m_localOf[i] = -1;
+	}
+	m_loadSpeed.resize(numFree);
+	bool small = true;
+	for (int i = 0; i < numFree && small; ++i)
+	{
+		m_loadSpeed[i] = 0;
 		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
 		if (id < 0) continue;
 		btSolverBody& b = pools.m_bodies[id];
@@ -459,9 +469,34 @@ bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar
 			b.m_originalBody->getCollisionShape()->getBoundingSphere(centre, radius);
 		}
 		const btVector3 dw = b.internalGetDeltaAngularVelocity() - m_before[i].m_deltaAngular;
-		if (!(m_before[i].m_loadLinear.length() + dw.length() * radius <= speed)) return false;
+		m_loadSpeed[i] = m_before[i].m_loadLinear.length() + dw.length() * radius;
+		if (!(m_loadSpeed[i] <= speed)) small = false;
+		m_localOf[id] = i;
 	}
-	return true;
+	if (small)
+	{
+		markFixated(layer, 1);
+		for (int r = m_contactStart[layer]; r < m_contactStart[layer + 1] && small; ++r)
+		{
+			const btSolverConstraint& c = pools.m_contacts[m_contactRows[r]];
+			const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
+			const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
+			if (fixA == fixB) continue;
+			const btSolverBody& fixed = pools.m_bodies[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+			const btSolverBody& free = pools.m_bodies[fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
+			const int local = m_localOf[fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
+			if (local < 0 || !fixed.m_originalBody || !free.m_originalBody) continue;
+			const btScalar ratio = fixed.m_originalBody->getInvMass() / free.m_originalBody->getInvMass();
+			if (!(m_loadSpeed[local] * ratio <= speed)) small = false;
+		}
+		markFixated(layer, 0);
+	}
+	for (int i = 0; i < numFree; ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
+		if (id >= 0) m_localOf[id] = -1;
+	}
+	return small;
 }
 
 void btLayeredPasses::transferOnly(int layer, const btSolverPools& pools)

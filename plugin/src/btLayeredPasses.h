@@ -136,8 +136,8 @@ private:
 	/// hull of its support points (statics: it must tip).
 	bool loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin);
 	/// D20: whether every free body's load (in m_before) changes its velocity by at most `speed`
-	/// (m/s) at its farthest point.
-	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed) const;
+	/// (m/s) at its farthest point, and would change no body it rests on by more (mass ratio).
+	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed);
 	/// D20: the layer's support rows take its loads (load transfer) with no re-solve; the changes
 	/// are withheld for the layer below.
 	void transferOnly(int layer, const btSolverPools& pools);
@@ -184,6 +184,7 @@ private:
 	// the layer's rows with one immovable end grouped by free body (CSR).
 	btAlignedObjectArray<int> m_localOf, m_transferStart, m_transferCursor;
 	btAlignedObjectArray<btLoadTransferRow> m_transferRows;
+	btAlignedObjectArray<btScalar> m_loadSpeed;  // D20: per free body of the layer, its load's speed (m/s)
 
 	btAlignedObjectArray<btVector3> m_hull, m_hullChain;  // support points in the plane, their convex hull
 	btAlignedObjectArray<btScalar> m_pushSpeed;  // per graph node: fastest approach of a body whose load it got (m/s)
