@@ -164,6 +164,11 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 		}
 		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params, normal);
 	});
+	zeroFixatedMasses(layer, pools);
+}
+
+void btLayeredPasses::zeroFixatedMasses(int layer, const btSolverPools& pools)
+{
 	m_savedInvMass.resize(0);
 	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
 	{
@@ -175,7 +180,7 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 	}
 }
 
-void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& pools)
+void btLayeredPasses::restoreFixatedMasses(int layer, const btSolverPools& pools)
 {
 	int saved = 0;
 	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
@@ -184,6 +189,27 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		if (id < 0) continue;
 		pools.m_bodies[id].internalSetInvMass(m_savedInvMass[saved++]);
 	}
+}
+
+void btLayeredPasses::handOnChange(const btSolverConstraint& c, btSolverRowKind kind, bool fixA, btScalar change, bool withhold,
+								   const btSolverPools& pools)
+{
+	if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
+	if (!withhold || change == btScalar(0)) return;
+	// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
+	withholdFromFixated(c, fixA, change);
+	if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
+	{
+		// How fast the free end pressed on the fixated one at setup (m/s along the normal):
+		// a load handed down cannot push a body faster than that (D16 guard).
+		const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+		if (node >= 0) m_pushSpeed[node] = btMax(m_pushSpeed[node], c.m_rhs / c.m_jacDiagABInv);
+	}
+}
+
+void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& pools)
+{
+	restoreFixatedMasses(layer, pools);
 	int row = 0, backup = 0;
 	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind kind) {
 		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
@@ -191,17 +217,7 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
 		if (!fixA && !fixB) return;
 		btRestoreRow(c, m_backups[backup++]);
-		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
-		if (!withhold || change == btScalar(0)) return;
-		// The reaction this layer's impulse change owes the fixated end (J_F^T delta lambda).
-		withholdFromFixated(c, fixA, change);
-		if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
-		{
-			// How fast the free end pressed on the fixated one at setup (m/s along the normal):
-			// a load handed down cannot push a body faster than that (D16 guard).
-			const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
-			if (node >= 0) m_pushSpeed[node] = btMax(m_pushSpeed[node], c.m_rhs / c.m_jacDiagABInv);
-		}
+		handOnChange(c, kind, fixA, change, withhold, pools);
 	});
 	markFixated(layer, 0);
 }
@@ -448,12 +464,7 @@ bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar
 	// times the bounding radius of its shape), and what that momentum would do to each body it
 	// rests on: a heavy body's small change is a large one for a light support.
 	const int numFree = m_layers->getNumFreeBodies(layer);
-	const int numSolverBodies = pools.m_bodies.size();
-	if (m_localOf.size() != numSolverBodies)
-	{
-		m_localOf.resize(numSolverBodies);
-		for (int i = 0; i < numSolverBodies; ++i) m_localOf[i] = -1;
-	}
+	indexFreeBodies(layer, pools);
 	m_loadSpeed.resize(numFree);
 	bool small = true;
 	for (int i = 0; i < numFree && small; ++i)
@@ -471,7 +482,6 @@ bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar
 		const btVector3 dw = b.internalGetDeltaAngularVelocity() - m_before[i].m_deltaAngular;
 		m_loadSpeed[i] = m_before[i].m_loadLinear.length() + dw.length() * radius;
 		if (!(m_loadSpeed[i] <= speed)) small = false;
-		m_localOf[id] = i;
 	}
 	if (small)
 	{
@@ -491,12 +501,32 @@ bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar
 		}
 		markFixated(layer, 0);
 	}
-	for (int i = 0; i < numFree; ++i)
+	unindexFreeBodies(layer);
+	return small;
+}
+
+void btLayeredPasses::indexFreeBodies(int layer, const btSolverPools& pools)
+{
+	const int numSolverBodies = pools.m_bodies.size();
+	if (m_localOf.size() != numSolverBodies)
+	{
+		m_localOf.resize(numSolverBodies);
+		for (int i = 0; i < numSolverBodies; ++i) m_localOf[i] = -1;
+	}
+	for (int i = 0; i < m_layers->getNumFreeBodies(layer); ++i)
+	{
+		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
+		if (id >= 0) m_localOf[id] = i;
+	}
+}
+
+void btLayeredPasses::unindexFreeBodies(int layer)
+{
+	for (int i = 0; i < m_layers->getNumFreeBodies(layer); ++i)
 	{
 		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
 		if (id >= 0) m_localOf[id] = -1;
 	}
-	return small;
 }
 
 void btLayeredPasses::transferOnly(int layer, const btSolverPools& pools)
@@ -507,36 +537,16 @@ void btLayeredPasses::transferOnly(int layer, const btSolverPools& pools)
 	markFixated(layer, 1);
 	m_impulseBefore.resize(0);
 	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) { m_impulseBefore.push_back(c.m_appliedImpulse); });
-	m_savedInvMass.resize(0);
-	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
-	{
-		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
-		if (id < 0) continue;
-		m_savedInvMass.push_back(pools.m_bodies[id].internalGetInvMass());
-		pools.m_bodies[id].internalSetInvMass(btVector3(0, 0, 0));
-	}
+	zeroFixatedMasses(layer, pools);
 	solveSupportRows(layer, pools, BT_SUPPORT_LOAD_TRANSFER);
-	int saved = 0;
-	for (int i = 0; i < m_layers->getNumFixatedBodies(layer); ++i)
-	{
-		const int id = m_solverBodyOfNode[m_layers->getFixatedBody(layer, i)];
-		if (id < 0) continue;
-		pools.m_bodies[id].internalSetInvMass(m_savedInvMass[saved++]);
-	}
+	restoreFixatedMasses(layer, pools);
 	int row = 0;
 	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind kind) {
 		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
 		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
 		if (fixA == fixB) return;
-		if (kind == BT_ROW_CONTACT) m_withheld.holdBack(int(&c - &pools.m_contacts[0]), change);
-		if (change == btScalar(0)) return;
-		withholdFromFixated(c, fixA, change);
-		if (kind == BT_ROW_CONTACT && c.m_jacDiagABInv != btScalar(0))
-		{
-			const int node = m_nodeOfSolverBody[fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
-			if (node >= 0) m_pushSpeed[node] = btMax(m_pushSpeed[node], c.m_rhs / c.m_jacDiagABInv);
-		}
+		handOnChange(c, kind, fixA, change, true, pools);
 	});
 	markFixated(layer, 0);
 }
@@ -545,17 +555,7 @@ void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, bt
 {
 	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
 	if (numFree == 0) return;
-	const int numSolverBodies = pools.m_bodies.size();
-	if (m_localOf.size() != numSolverBodies)
-	{
-		m_localOf.resize(numSolverBodies);
-		for (int i = 0; i < numSolverBodies; ++i) m_localOf[i] = -1;
-	}
-	for (int i = 0; i < numFree; ++i)
-	{
-		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
-		if (id >= 0) m_localOf[id] = i;
-	}
+	indexFreeBodies(layer, pools);
 	// Rows with one end free in this layer and the other fixated, grouped by the free body.
 	auto freeEnd = [&](const btSolverConstraint& c, bool& sideA) -> int {
 		// Fixated here, or static (Bullet's shared fixed body): no inverse mass while the layer is solved.

@@ -121,6 +121,15 @@ public:
 private:
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);
+	/// Zero (and keep) the inverse mass of the layer's lower bodies' solver bodies; and restore it.
+	void zeroFixatedMasses(int layer, const btSolverPools& pools);
+	void restoreFixatedMasses(int layer, const btSolverPools& pools);
+	/// A row's impulse change in a pass where its end fixA (or B) was fixated: its contact share held
+	/// back (D5) and, if withhold, the reaction kept for that end and its push speed noted (D16).
+	void handOnChange(const btSolverConstraint& c, btSolverRowKind kind, bool fixA, btScalar change, bool withhold, const btSolverPools& pools);
+	/// m_localOf of the layer's free bodies: their index among them (-1 for every other body); and clear it.
+	void indexFreeBodies(int layer, const btSolverPools& pools);
+	void unindexFreeBodies(int layer);
 	/// One sweep of the layer's rows; returns the largest squared change of a row's velocity.
 	btScalar sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
 	/// For every free body of the layer, its rows against fixated or static bodies: the load
