@@ -14,6 +14,8 @@ subject to the following restrictions:
 
 #include "btLoadTransfer.h"
 
+#include "btCholesky6.h"
+
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
 namespace
@@ -42,35 +44,9 @@ bool solveRegularized(btScalar A[6][6], const btScalar b[6], btScalar x[6])
 	// Directions the rows cannot reach keep their velocity; a small relative regularisation
 	// keeps the factorisation defined there (float: 1e-6 of the mean diagonal).
 	const btScalar eps = trace * btScalar(1e-6) / btScalar(6);
-	btScalar L[6][6] = {};
-	for (int i = 0; i < 6; ++i)
-	{
-		for (int j = 0; j <= i; ++j)
-		{
-			btScalar sum = A[i][j] + (i == j ? eps : btScalar(0));
-			for (int k = 0; k < j; ++k) sum -= L[i][k] * L[j][k];
-			if (i == j)
-			{
-				if (!(sum > btScalar(0))) return false;
-				L[i][i] = btSqrt(sum);
-			}
-			else
-				L[i][j] = sum / L[j][j];
-		}
-	}
-	btScalar y[6];
-	for (int i = 0; i < 6; ++i)
-	{
-		btScalar sum = b[i];
-		for (int k = 0; k < i; ++k) sum -= L[i][k] * y[k];
-		y[i] = sum / L[i][i];
-	}
-	for (int i = 5; i >= 0; --i)
-	{
-		btScalar sum = y[i];
-		for (int k = i + 1; k < 6; ++k) sum -= L[k][i] * x[k];
-		x[i] = sum / L[i][i];
-	}
+	btCholesky6 cholesky;
+	if (!cholesky.factor(A, eps, btScalar(0), false)) return false;
+	cholesky.solve(b, x);
 	return true;
 }
 }  // namespace

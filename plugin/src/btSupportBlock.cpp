@@ -14,56 +14,14 @@ subject to the following restrictions:
 
 #include "btSupportBlock.h"
 
+#include "btCholesky6.h"
+
 #include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
 namespace
 {
 const int kMaxBlockRows = 64;  // a body with more support rows keeps PGS alone
-
-/// Cholesky of a symmetric positive 6 x 6 matrix after Jacobi scaling (so metres and radians
-/// weigh alike); false if a scaled pivot falls below minPivot (too close to rank deficient).
-bool factorScaled(const btScalar A[6][6], btScalar L[6][6], btScalar scale[6], btScalar minPivot)
-{
-	for (int i = 0; i < 6; ++i)
-	{
-		if (!(A[i][i] > btScalar(0))) return false;
-		scale[i] = btScalar(1) / btSqrt(A[i][i]);
-	}
-	for (int i = 0; i < 6; ++i)
-		for (int j = 0; j <= i; ++j)
-		{
-			btScalar sum = A[i][j] * scale[i] * scale[j];
-			for (int k = 0; k < j; ++k) sum -= L[i][k] * L[j][k];
-			if (i == j)
-			{
-				if (!(sum > minPivot)) return false;
-				L[i][i] = btSqrt(sum);
-			}
-			else
-				L[i][j] = sum / L[j][j];
-		}
-	return true;
-}
-
-/// x = A^-1 b with the factor of factorScaled.
-void solveFactored(const btScalar L[6][6], const btScalar scale[6], const btScalar b[6], btScalar x[6])
-{
-	btScalar y[6];
-	for (int i = 0; i < 6; ++i)
-	{
-		btScalar sum = b[i] * scale[i];
-		for (int k = 0; k < i; ++k) sum -= L[i][k] * y[k];
-		y[i] = sum / L[i][i];
-	}
-	for (int i = 5; i >= 0; --i)
-	{
-		btScalar sum = y[i];
-		for (int k = i + 1; k < 6; ++k) sum -= L[k][i] * x[k];
-		x[i] = sum / L[i][i];
-	}
-	for (int i = 0; i < 6; ++i) x[i] *= scale[i];
-}
 
 /// The row's Jacobian on the body (J_b) and on its other, immovable end (J_o).
 struct btRowSides
@@ -136,12 +94,12 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	if (used < 6) return false;
 	for (int a = 0; a < 6; ++a)
 		for (int b = a + 1; b < 6; ++b) A[a][b] = A[b][a];
-	btScalar L[6][6] = {}, scale[6];
-	if (!factorScaled(A, L, scale, btScalar(1e-3))) return false;
+	btCholesky6 cholesky;  // Jacobi-scaled: metres and radians weigh alike
+	if (!cholesky.factor(A, btScalar(0), btScalar(1e-3), true)) return false;
 
 	// Velocity change (least squares), its momentum, and the impulses that deliver it.
 	btScalar du[6], p[6], z[6];
-	solveFactored(L, scale, Je, du);
+	cholesky.solve(Je, du);
 	const btVector3 linearMomentum = btVector3(du[0], du[1], du[2]) / rb->getInvMass();
 	const btVector3 angularMomentum = invInertia.inverse() * btVector3(du[3], du[4], du[5]);
 	for (int a = 0; a < 3; ++a)
@@ -149,7 +107,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		p[a] = linearMomentum[a];
 		p[3 + a] = angularMomentum[a];
 	}
-	solveFactored(L, scale, p, z);
+	cholesky.solve(p, z);
 	const btVector3 zLinear(z[0], z[1], z[2]), zAngular(z[3], z[4], z[5]);
 
 	// Projected onto the limits: normals first, friction bounded by its normal's new impulse. The
