@@ -233,16 +233,19 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_diagnostics.m_warmStartCoupling);
 	m_stats.m_timeSetupMs += millisecondsSince(clock);
 
-	// Global pass: Bullet's own sweeps over every row, every body free; the app's residual
-	// threshold may end it early (the layers always run their sweeps).
+	// Global pass: Bullet's own sweeps over every row, every body free; it ends early once
+	// converged (D21) or below the app's residual threshold.
 	clock.reset();
 	btContactSolverInfo sweepInfo = stepInfo;
 	sweepInfo.m_numIterations = globalSweeps;
 	for (int iteration = 0; iteration < globalSweeps; ++iteration)
 	{
+		++m_stats.m_numGlobalSweeps;
 		m_leastSquaresResidual = solveSingleIteration(iteration, bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints,
 													  m_constraints.size(), sweepInfo, debugDrawer);
 		if (m_leastSquaresResidual <= info.m_leastSquaresResidualThreshold) break;
+		// D21: converged (Bullet's residual: the sum of the rows' squared velocity changes).
+		if (m_settings.m_diagnostics.m_convergedGlobalPass && m_leastSquaresResidual <= convergedSpeed * convergedSpeed) break;
 	}
 	m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
 

@@ -81,3 +81,38 @@ TEST(SmallLoads, SettledTowerHandsItsWeightDownWithoutReSolves)
 	EXPECT_GT(other.simulation().shockSolver()->getStatistics().m_numWeightSweeps, 0);
 	EXPECT_NEAR(other.summary().groundOverWeightLastSecond, 1.0, 0.01);
 }
+
+TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
+{
+	// D21 (docs/design.md, section 4f): the global pass ends once a sweep changes the rows'
+	// velocities by at most the convergence speed in total. A settled, warm-started pyramid of base
+	// 10 converges in its first sweep and still stands with the ground carrying its weight; cubes
+	// falling into a pit never converge within ceil(f N) = 5 sweeps, so they run every one.
+	harness::Trial pyramid(spec::shock(), "pyramid", {{"base", 10}});
+	pyramid.run(2.0);
+	const btShockPropagationConstraintSolver& solver = *pyramid.simulation().shockSolver();
+	long sweeps = 0;
+	for (int i = 0; i < 60; ++i)
+	{
+		pyramid.step();
+		sweeps += solver.getStatistics().m_numGlobalSweeps;
+	}
+	EXPECT_LE(double(sweeps) / 60.0, 1.1) << "global sweeps per step";
+	pyramid.run(8.0);
+	EXPECT_LT(pyramid.maxDrift(), harness::kStandingDriftMeters);
+	EXPECT_NEAR(pyramid.summary().groundOverWeightLastSecond, 1.0, 0.05);
+
+	harness::Trial pit(spec::shock(), "dense_random", {{"seed", 1}});
+	pit.run(0.8);  // the grid has landed in the pit and is piling up
+	const btShockPropagationConstraintSolver& pile = *pit.simulation().shockSolver();
+	long layered = 0, full = 0;
+	for (int i = 0; i < 30; ++i)
+	{
+		pit.step();
+		if (pile.getStatistics().m_numLayeredGroups == 0) continue;
+		++layered;
+		if (pile.getStatistics().m_numGlobalSweeps >= 5 * pile.getStatistics().m_numLayeredGroups) ++full;
+	}
+	ASSERT_GT(layered, 0);
+	EXPECT_EQ(full, layered) << "steps of a moving pile whose global pass ended early";
+}

@@ -162,7 +162,7 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_twoFrictionDirections), false, "appfriction"),
 		numberFlag("--weight-convergence", "C,...", "plugin: a weight-pass layer stops sweeping once no row's velocity changes by more than C |g| dt (default 0.006; D16)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightConvergence), "wconv", [](double c) { return c >= 0; }, ">= 0"),
-		numberFlag("--tip-margin", "M,...", "plugin: weight-pass guard, share of the support's size a load must act outside of to tip a body (default 0.1; D16)",
+		numberFlag("--tip-margin", "M,...", "plugin: weight-pass guard, share of the support's size a load must act outside of to tip a body (default 0; D16)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipMargin), "tipmargin", [](double m) { return m >= 0; }, ">= 0"),
 		switchFlag("--no-support-blocks", "plugin: no support block solve before a layer's sweeps (D19 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
@@ -170,6 +170,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   field(&btShockPropagationSettings::m_layerMinIterations), "minsweeps", [](double n) { return n >= 1 || n == -1; }, ">= 1 or -1"),
 		switchFlag("--resolve-small-loads", "plugin: re-solve every loaded weight-pass layer, even below the convergence speed (D20 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_transferSmallLoads), false, "resolvesmall"),
+		switchFlag("--full-global-pass", "plugin: the global pass always runs ceil(f N) sweeps, even once converged (D21 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_convergedGlobalPass), false, "fullglobal"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
 	};

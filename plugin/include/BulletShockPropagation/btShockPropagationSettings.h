@@ -123,6 +123,13 @@ struct btShockPropagationDiagnostics
 	/// where a settled stack hands down only bookkeeping (measured in docs/design.md, D20).
 	bool m_transferSmallLoads = true;
 
+	/// D21: the global pass ends once one of its sweeps changes the rows' velocities by at most
+	/// the convergence speed (m_weightConvergence |g| dt) in total (the square root of the sum of
+	/// squares Bullet's sweep returns, so no row changed by more), at least one sweep, at most
+	/// ceil(f N). A warm-started stack at rest converges in its first sweep; a moving scene runs
+	/// them all. Off: always ceil(f N) sweeps (measured in docs/design.md, D21).
+	bool m_convergedGlobalPass = true;
+
 	/// D16 convergence test of a weight-pass re-solve, as a share of |g| dt (unitless): a re-solve
 	/// whose last sweep changed no row's velocity by more than this has converged and stands
 	/// (1 mm/s at 9.81 m/s^2 and 60 Hz).

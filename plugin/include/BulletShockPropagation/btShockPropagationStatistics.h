@@ -25,6 +25,7 @@ struct btShockPropagationStatistics
 	int m_numFixatedBodies = 0;   ///< body fixations over all layers (a body is fixated at most once)
 	int m_numLayeredGroups = 0;   ///< groups solved layer by layer (the others had no stacks)
 	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (docs/design.md, section 12)
+	int m_numGlobalSweeps = 0;    ///< PGS sweeps of the global pass (D21: it ends once converged)
 	int m_numLayerSweeps = 0;     ///< PGS sweeps of the layer passes, over all layers (D19: they end once converged)
 	int m_numWeightSweeps = 0;    ///< PGS sweeps of the weight pass, over all its layers (D13)
 	int m_numWeightRejections = 0;///< weight-pass layers that could not carry their load (D13 guard)
