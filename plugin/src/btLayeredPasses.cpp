@@ -273,14 +273,15 @@ int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const bt
 	// D19: each free body's block of rows against its fixated supports, solved in one step.
 	if (sweeps.m_block) solveSupportRows(layer, pools, BT_SUPPORT_BLOCK);
 	const bool joints = hasJoints(layer, pools);
-	const int total = joints ? btMax(sweeps.m_max, m_jointSweeps) : sweeps.m_max;
+	const int contactSweeps = joints ? sweeps.m_jointLayerMax : sweeps.m_max;
+	const int total = joints ? btMax(contactSweeps, m_jointSweeps) : contactSweeps;
 	// Then the sweeps: at least m_min, until one changes no row's velocity by more than the
 	// convergence speed (D19), at most m_max (joints that ask for more get them).
 	const btScalar converged2 = sweeps.m_convergedSpeed * sweeps.m_convergedSpeed;
 	int run = 0;
 	for (int iteration = 0; iteration < total; ++iteration)
 	{
-		const btScalar change = sweep(layer, iteration, sweeps.m_max, pools);
+		const btScalar change = sweep(layer, iteration, contactSweeps, pools);
 		++run;
 		if (sweeps.m_min >= 0 && !joints && iteration + 1 >= sweeps.m_min && change <= converged2) break;
 	}

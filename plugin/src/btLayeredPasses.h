@@ -39,7 +39,8 @@ struct btWeightPassParams
 /// The up pass's schedule for each layer (D7, D19).
 struct btLayerSweeps
 {
-	int m_max = 10;                ///< most sweeps (the app's N)
+	int m_max = 10;                ///< most sweeps (the app's N, at least the floor: D22)
+	int m_jointLayerMax = 10;      ///< most sweeps of the layer holding the joint rows (the app's N, as a stock solve)
 	int m_min = -1;                ///< fewest sweeps before the convergence test ends the layer; negative: always m_max
 	btScalar m_convergedSpeed = 0; ///< m/s: a sweep that changed no row's velocity by more ends the layer
 	bool m_block = false;          ///< solve each free body's support rows as one block first (btSupportBlock.h)

@@ -68,6 +68,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	setWeighting(settings.m_weighting);
 	m_settings.m_globalIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_globalIterations);
 	m_settings.m_layerIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_layerIterations);
+	m_settings.m_layerIterationFloor = btMax(0, settings.m_layerIterationFloor);
 	m_settings.m_layerMinIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_layerMinIterations);
 	m_settings.m_correctionIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_correctionIterations);
 	if (!(settings.m_diagnostics.m_correctionFraction >= 0 && settings.m_diagnostics.m_correctionFraction <= 1)) m_settings.m_diagnostics.m_correctionFraction = defaults.m_diagnostics.m_correctionFraction;
@@ -198,7 +199,9 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		globalSweeps = btMax(1, int(std::ceil(double(f) * worldIterations - 1e-4)));
 	else if (m_settings.m_globalIterations < 0)
 		globalSweeps = 0;
-	const int layerSweeps = sweepCount(m_settings.m_layerIterations, worldIterations);
+	const int appLayerSweeps = sweepCount(m_settings.m_layerIterations, worldIterations);
+	// D22: an app's small N does not cut a layer's sub-problem short (the joints' layer keeps N).
+	const int layerSweeps = m_settings.m_layerIterations < 0 ? btMax(appLayerSweeps, m_settings.m_layerIterationFloor) : appLayerSweeps;
 	// The weight pass's convergence speed (D16), also D18's scale of "at rest" (m/s).
 	const btScalar convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
 
@@ -259,9 +262,10 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	const bool weightFeeling = m_settings.m_weightFeeling;
 	// Joints with more iterations than the app's (btTypedConstraint::setOverrideNumSolverIterations)
 	// get them, as in a stock solve: their rows are in layer 0.
-	m_passes->setJointSweeps(btMax(layerSweeps, m_maxOverrideNumSolverIterations));
+	m_passes->setJointSweeps(btMax(appLayerSweeps, m_maxOverrideNumSolverIterations));
 	btLayerSweeps sweeps;
 	sweeps.m_max = layerSweeps;
+	sweeps.m_jointLayerMax = appLayerSweeps;
 	sweeps.m_block = m_settings.m_diagnostics.m_supportBlocks;
 	sweeps.m_min = m_settings.m_layerMinIterations;
 	sweeps.m_convergedSpeed = convergedSpeed;

@@ -104,3 +104,26 @@ TEST_P(Truth, HoldsUnderThePluginDefault)
 
 INSTANTIATE_TEST_SUITE_P(Cases, Truth, ::testing::Range(size_t(0), truth::truthCases().size()),
 						 [](const ::testing::TestParamInfo<size_t>& info) { return truth::truthCases().at(info.param).name; });
+
+TEST(TruthAtFewIterations, AtTheAppsFiveIterationsTheRampStackSticks)
+{
+	// D22 (docs/design.md, section 4g): a layer sweeps at most max(N, 10) times, so an app asking
+	// for 5 iterations (BenchmarkDemo) does not cut a layer's sub-problem short. The 3-box stack on
+	// a 20-degree ramp with mu 0.5 (> tan 20) must stick, in world and solver-only mode; with the
+	// layers capped at the app's 5 sweeps it crept 1.5 cm in 5 s (float).
+	const truth::TruthCase* ramp = nullptr;
+	for (const truth::TruthCase& c : truth::truthCases())
+		if (c.name == "RampStack_mu050_Sticks") ramp = &c;
+	ASSERT_NE(ramp, nullptr);
+	for (harness::SolverKind kind : {harness::SolverKind::ShockWorld, harness::SolverKind::ShockSolverOnly})
+	{
+		harness::SolverSpec spec;
+		spec.kind = kind;
+		spec.iterations = 5;
+		const truth::Verdict v = ramp->run(spec);
+		EXPECT_TRUE(v.pass) << v.detail;
+		harness::SolverSpec capped = spec;
+		capped.settings.m_layerIterationFloor = 0;
+		std::printf("ramp stack at 5 iterations: %s; layers capped at 5: %s\n", v.detail.c_str(), ramp->run(capped).detail.c_str());
+	}
+}

@@ -168,6 +168,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
 		numberFlag("--layer-min-sweeps", "N,...", "plugin: fewest sweeps per layer before a converged layer ends, -1 = always the app's N (default 2; D19)",
 				   field(&btShockPropagationSettings::m_layerMinIterations), "minsweeps", [](double n) { return n >= 1 || n == -1; }, ">= 1 or -1"),
+		numberFlag("--layer-floor", "N,...", "plugin: a layer may sweep at most max(the app's N, N) times before it is cut off unconverged, 0 = the app's N (default 10; D22)",
+				   field(&btShockPropagationSettings::m_layerIterationFloor), "floor", [](double n) { return n >= 0; }, ">= 0"),
 		switchFlag("--resolve-small-loads", "plugin: re-solve every loaded weight-pass layer, even below the convergence speed (D20 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_transferSmallLoads), false, "resolvesmall"),
 		switchFlag("--full-global-pass", "plugin: the global pass always runs ceil(f N) sweeps, even once converged (D21 off)",
