@@ -193,7 +193,7 @@ struct btShockPropagationSettings
 	int m_globalIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
 
 	/// PGS sweeps of each layer (count). BT_SHOCK_ITERATIONS_FROM_WORLD (default): the world's
-	/// m_numIterations. A layer is one contact deep, so its sweeps converge it where a whole
+	/// m_numIterations, at least m_layerIterationFloor. A layer is one contact deep, so its sweeps converge it where a whole
 	/// stack would need O(n^2); each row is in one layer, so the layered pass costs about one
 	/// stock solve (D7).
 	int m_layerIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
