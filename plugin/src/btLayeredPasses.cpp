@@ -94,6 +94,15 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		const int id = solverBodyOfNode[node];
 		if (id >= 0 && id < numSolverBodies) m_nodeOfSolverBody[id] = node;
 	}
+	// Support rows are gathered per layer on first use (gatherSupportRows).
+	m_freeSlot.resize(m_numLayers + 1);
+	m_freeSlot[0] = 0;
+	for (int k = 0; k < m_numLayers; ++k) m_freeSlot[k + 1] = m_freeSlot[k] + (k < layers.getNumLayers() ? layers.getNumFreeBodies(k) : 0);
+	m_supportBegin.resize(m_freeSlot[m_numLayers]);
+	m_supportEnd.resize(m_freeSlot[m_numLayers]);
+	m_supportGathered.resize(m_numLayers);
+	for (int k = 0; k < m_numLayers; ++k) m_supportGathered[k] = 0;
+	m_transferRows.resize(0);
 	m_withheld.reset(solverBodyOfNode.size(), pools.m_contacts.size());
 	m_pushSpeed.resize(solverBodyOfNode.size());
 	for (int i = 0; i < m_pushSpeed.size(); ++i) m_pushSpeed[i] = 0;
@@ -552,8 +561,10 @@ void btLayeredPasses::transferOnly(int layer, const btSolverPools& pools)
 	markFixated(layer, 0);
 }
 
-void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, btSupportSolve solve)
+void btLayeredPasses::gatherSupportRows(int layer, const btSolverPools& pools)
 {
+	if (m_supportGathered[layer]) return;
+	m_supportGathered[layer] = 1;
 	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
 	if (numFree == 0) return;
 	indexFreeBodies(layer, pools);
@@ -579,9 +590,15 @@ void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, bt
 	countRows(pools.m_contacts, m_contactStart, m_contactRows);
 	countRows(pools.m_frictions, m_frictionStart, m_frictionRows);
 	for (int i = 0; i < numFree; ++i) m_transferStart[i + 1] += m_transferStart[i];
-	m_transferRows.resize(m_transferStart[numFree]);
+	const int base = m_transferRows.size();
+	m_transferRows.resize(base + m_transferStart[numFree]);
 	m_transferCursor.resize(numFree);
-	for (int i = 0; i < numFree; ++i) m_transferCursor[i] = m_transferStart[i];
+	for (int i = 0; i < numFree; ++i)
+	{
+		m_transferCursor[i] = base + m_transferStart[i];
+		m_supportBegin[m_freeSlot[layer] + i] = base + m_transferStart[i];
+		m_supportEnd[m_freeSlot[layer] + i] = base + m_transferStart[i + 1];
+	}
 	auto fillRows = [&](btConstraintArray& pool, const btAlignedObjectArray<int>& start, const btAlignedObjectArray<int>& sorted, bool contact) {
 		for (int i = start[layer]; i < start[layer + 1]; ++i)
 		{
@@ -593,15 +610,23 @@ void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, bt
 	};
 	fillRows(pools.m_contacts, m_contactStart, m_contactRows, true);
 	fillRows(pools.m_frictions, m_frictionStart, m_frictionRows, false);
+	unindexFreeBodies(layer);
+}
+
+void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, btSupportSolve solve)
+{
+	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
+	if (numFree == 0) return;
+	gatherSupportRows(layer, pools);
 	for (int i = 0; i < numFree; ++i)
 	{
 		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
 		if (id < 0) continue;
-		m_localOf[id] = -1;
 		btSolverBody& b = pools.m_bodies[id];
-		const int n = m_transferStart[i + 1] - m_transferStart[i];
-		if (n > 0 && solve == BT_SUPPORT_BLOCK) btSolveSupportBlock(b, pools.m_bodies, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
-		else if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[m_transferStart[i]], n, pools.m_contacts);
+		const int first = m_supportBegin[m_freeSlot[layer] + i];
+		const int n = m_supportEnd[m_freeSlot[layer] + i] - first;
+		if (n > 0 && solve == BT_SUPPORT_BLOCK) btSolveSupportBlock(b, pools.m_bodies, &m_transferRows[first], n, pools.m_contacts);
+		else if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[first], n, pools.m_contacts);
 	}
 }
 

@@ -131,6 +131,9 @@ private:
 	/// m_localOf of the layer's free bodies: their index among them (-1 for every other body); and clear it.
 	void indexFreeBodies(int layer, const btSolverPools& pools);
 	void unindexFreeBodies(int layer);
+	/// The layer's rows with one end free and the other immovable (fixated here, or static), grouped
+	/// by free body, once per step (call with the layer's fixated inverse masses zeroed).
+	void gatherSupportRows(int layer, const btSolverPools& pools);
 	/// One sweep of the layer's rows; returns the largest squared change of a row's velocity.
 	btScalar sweep(int layer, int iteration, int sweeps, const btSolverPools& pools);
 	/// For every free body of the layer, its rows against fixated or static bodies: the load
@@ -192,8 +195,13 @@ private:
 	btAlignedObjectArray<btBodyDelta> m_before;           // weight pass: free bodies before their load
 	// Load transfer: per solver body its index among the layer's free bodies (-1 otherwise), and
 	// the layer's rows with one immovable end grouped by free body (CSR).
+	// Gathered once per layer per step (the up pass's block and the weight pass's transfer see the
+	// same fixated ends): free body slot m_freeSlot[layer] + i owns m_transferRows[m_supportBegin[slot],
+	// m_supportEnd[slot]).
 	btAlignedObjectArray<int> m_localOf, m_transferStart, m_transferCursor;
 	btAlignedObjectArray<btLoadTransferRow> m_transferRows;
+	btAlignedObjectArray<int> m_freeSlot, m_supportBegin, m_supportEnd;
+	btAlignedObjectArray<char> m_supportGathered;  // per layer
 	btAlignedObjectArray<btScalar> m_loadSpeed;  // D20: per free body of the layer, its load's speed (m/s)
 
 	btAlignedObjectArray<btVector3> m_hull, m_hullChain;  // support points in the plane, their convex hull
