@@ -285,6 +285,7 @@ def plot_truth(rows, out_dir):
     configs = list(dict.fromkeys((r["config"], int(r["iterations"])) for r in rows))
     fig, ax = plt.subplots(figsize=(9, 5.5))
     seen = set()
+    placed = {}  # truths passed -> log10(ms) of the labels already at that height
     for config, iterations in configs:
         mine = [r for r in rows if r["config"] == config and int(r["iterations"]) == iterations]
         ran = [r for r in mine if r["pass"] != "skipped" and not math.isnan(num(r["msPerStep"]))]
@@ -300,7 +301,11 @@ def plot_truth(rows, out_dir):
         text = config if config == "mlcp" else f"{config} {iterations}"
         if skipped:
             text += f" ({skipped} skipped)"
-        ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(5, 4), fontsize=7, rotation=30, color=color)
+        # Labels of configurations at the same count and nearly the same cost are stacked, not overdrawn.
+        near = sum(1 for x in placed.get(passed, []) if abs(x - math.log10(ms)) < 0.25)
+        placed.setdefault(passed, []).append(math.log10(ms))
+        ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(5, 4 + 8 * near), fontsize=7,
+                    rotation=30 if near == 0 else 0, color=color)
     ax.set_xscale("log")
     log_ticks(ax.xaxis)
     ax.set_ylim(-0.5, len(cases) + 0.8)
