@@ -103,6 +103,17 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	m_supportGathered.resize(m_numLayers);
 	for (int k = 0; k < m_numLayers; ++k) m_supportGathered[k] = 0;
 	m_transferRows.resize(0);
+	m_composites.resize(0);
+	m_compositeMembers.resize(0);
+	m_active.resize(0);
+	m_slipsAtSetup.resize(0);
+	m_compositeOf.resize(numSolverBodies);
+	m_inComposite.resize(numSolverBodies);
+	for (int i = 0; i < numSolverBodies; ++i)
+	{
+		m_compositeOf[i] = -1;
+		m_inComposite[i] = 0;
+	}
 	m_withheld.reset(solverBodyOfNode.size(), pools.m_contacts.size());
 	m_pushSpeed.resize(solverBodyOfNode.size());
 	for (int i = 0; i < m_pushSpeed.size(); ++i) m_pushSpeed[i] = 0;
@@ -161,7 +172,10 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 		m_impulseBefore.push_back(row.m_appliedImpulse);
 		const bool fixA = m_fixated[row.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[row.m_solverBodyIdB] != 0;
-		if (!fixA && !fixB) return;
+		// D23: a sliding base's friction rows see the mass of its composite.
+		const int compA = kind == BT_ROW_FRICTION ? compositeOf(row.m_solverBodyIdA) : -1;
+		const int compB = kind == BT_ROW_FRICTION ? compositeOf(row.m_solverBodyIdB) : -1;
+		if (!fixA && !fixB && compA < 0 && compB < 0) return;
 		m_backups.push_back(btBackupRow(row));
 		// The contact normal of the row's contact (friction rows find it through m_frictionIndex).
 		btVector3 normal(0, 0, 0);
@@ -172,6 +186,10 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 			normal = contact.m_contactNormal1.isZero() ? contact.m_contactNormal2 : contact.m_contactNormal1;
 		}
 		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params, normal);
+		if (compA >= 0 || compB >= 0)
+			btCompositeFrictionRow(row, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB],
+								   compA >= 0 ? m_composites[compA].m_massRatio : btScalar(1), compB >= 0 ? m_composites[compB].m_massRatio : btScalar(1),
+								   params.m_sor);
 	});
 	zeroFixatedMasses(layer, pools);
 }
@@ -224,8 +242,10 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
 		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
-		if (!fixA && !fixB) return;
+		const bool composite = kind == BT_ROW_FRICTION && (compositeOf(c.m_solverBodyIdA) >= 0 || compositeOf(c.m_solverBodyIdB) >= 0);
+		if (!fixA && !fixB && !composite) return;
 		btRestoreRow(c, m_backups[backup++]);
+		if (!fixA && !fixB) return;
 		handOnChange(c, kind, fixA, change, withhold, pools);
 	});
 	markFixated(layer, 0);
@@ -249,6 +269,12 @@ btScalar btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSo
 		btSolverConstraint& c = pools.m_contacts[m_contactRows[i]];
 		noteResidual(worst, pools.m_lowerLimit(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c));
 	}
+	// D23: while the friction rows are swept, a sliding base moves with its composite's mass.
+	for (int i = 0; i < m_active.size(); ++i)
+	{
+		const btSlidingComposite& comp = m_composites[m_active[i]];
+		bodies[comp.m_base].internalSetInvMass(comp.m_savedInvMass / comp.m_massRatio);
+	}
 	for (int i = m_frictionStart[layer]; i < m_frictionStart[layer + 1]; ++i)
 	{
 		btSolverConstraint& c = pools.m_frictions[m_frictionRows[i]];
@@ -259,6 +285,11 @@ btScalar btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSo
 			c.m_upperLimit = c.m_friction * normal;
 			noteResidual(worst, pools.m_generic(bodies[c.m_solverBodyIdA], bodies[c.m_solverBodyIdB], c));
 		}
+	}
+	for (int i = 0; i < m_active.size(); ++i)
+	{
+		const btSlidingComposite& comp = m_composites[m_active[i]];
+		bodies[comp.m_base].internalSetInvMass(comp.m_savedInvMass);
 	}
 	for (int i = m_rollingStart[layer]; i < m_rollingStart[layer + 1]; ++i)
 	{
@@ -278,6 +309,7 @@ btScalar btLayeredPasses::sweep(int layer, int iteration, int sweeps, const btSo
 int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const btLayerFixationParams& params, bool withhold, const btSolverPools& pools)
 {
 	if (layer < 0 || layer >= m_numLayers) return 0;
+	if (withhold && sweeps.m_compositeSlip > btScalar(0) && m_slipsAtSetup.size()) formComposites(layer, pools, sweeps.m_compositeSlip);
 	fixate(layer, params, pools);
 	// D19: each free body's block of rows against its fixated supports, solved in one step.
 	if (sweeps.m_block) solveSupportRows(layer, pools, BT_SUPPORT_BLOCK);
@@ -295,6 +327,7 @@ int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const bt
 		if (sweeps.m_min >= 0 && !joints && iteration + 1 >= sweeps.m_min && change <= converged2) break;
 	}
 	release(layer, withhold, pools);
+	if (m_active.size()) recordComposites(pools);
 	return run;
 }
 
@@ -388,9 +421,12 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
 			m_before[i].m_loadLinear = id < 0 ? btVector3(0, 0, 0) : pools.m_bodies[id].internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
 		}
+		// D23: the layer's sliding bases move with their composites again.
+		if (weight.m_compositeTolerance > btScalar(0) && m_composites.size()) activateComposites(k, pools, weight.m_compositeTolerance);
+		const bool withComposites = m_active.size() > 0;
 		// D20: loads a re-solve would call converged before its first sweep are taken by the
 		// support rows alone (load transfer) and the changes handed on.
-		if (weight.m_transfer && weight.m_transferSmallLoads && loadsBelow(k, pools, weight.m_convergedSpeed))
+		if (!withComposites && weight.m_transfer && weight.m_transferSmallLoads && loadsBelow(k, pools, weight.m_convergedSpeed))
 		{
 			transferOnly(k, pools);
 			continue;
@@ -415,6 +451,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		// or tips where statics says it must (its weight and load act outside its support, and it
 		// pivots rather than sinks).
 		const bool converged = lastChange <= converged2;
+		if (withComposites) shareCompositeMotion(k, pools);
 		bool anyRejected = false;
 		for (int i = 0; i < numFree; ++i)
 		{
@@ -463,6 +500,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			if (rejected) ++*rejected;
 		}
 		release(k, true, pools);  // a rejected layer's rows changed nothing: nothing is withheld
+		if (withComposites) deactivateComposites(!anyRejected, pools);
 	}
 	m_withJoints = true;
 	return total;
@@ -625,6 +663,7 @@ void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, bt
 		btSolverBody& b = pools.m_bodies[id];
 		const int first = m_supportBegin[m_freeSlot[layer] + i];
 		const int n = m_supportEnd[m_freeSlot[layer] + i] - first;
+		if (n > 0 && solve == BT_SUPPORT_BLOCK && compositeOf(id) >= 0) continue;  // D23: its friction is the composite's
 		if (n > 0 && solve == BT_SUPPORT_BLOCK) btSolveSupportBlock(b, pools.m_bodies, &m_transferRows[first], n, pools.m_contacts);
 		else if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[first], n, pools.m_contacts);
 	}
@@ -808,4 +847,196 @@ const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* man
 		else high = mid - 1;
 	}
 	return 0;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// D23: sliding composites (btSlidingComposite.h).
+
+namespace
+{
+/// A friction impulse within this share of its Coulomb bound mu N counts as at the bound.
+const btScalar kAtCoulombLimit = btScalar(0.99);
+}  // namespace
+
+void btLayeredPasses::markSlipsAtSetup(const btSolverPools& pools, btScalar speed)
+{
+	m_slipsAtSetup.resize(pools.m_frictions.size());
+	for (int i = 0; i < pools.m_frictions.size(); ++i)
+		m_slipsAtSetup[i] = btFabs(btRowSlipAtSetup(pools.m_frictions[i], pools.m_bodies)) > speed ? 1 : 0;
+}
+
+int btLayeredPasses::freeIndexOf(int layer, int node) const
+{
+	const int numFree = layer < m_layers->getNumLayers() ? m_layers->getNumFreeBodies(layer) : 0;
+	for (int i = 0; i < numFree; ++i)
+		if (m_layers->getFreeBody(layer, i) == node) return i;
+	return -1;
+}
+
+void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btScalar slip)
+{
+	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
+	const auto dynamicBody = [&](int id) -> const btRigidBody* {
+		const btRigidBody* rb = bodies[id].m_originalBody;
+		return (rb && rb->getInvMass() > btScalar(0)) ? rb : 0;
+	};
+	markFixated(layer, 1);
+	const int first = m_composites.size();
+	for (int r = m_frictionStart[layer]; r < m_frictionStart[layer + 1]; ++r)
+	{
+		const int index = m_frictionRows[r];
+		const btSolverConstraint& c = pools.m_frictions[index];
+		if (!m_slipsAtSetup[index] || c.m_frictionIndex < 0 || c.m_frictionIndex >= pools.m_contacts.size()) continue;
+		const btSolverConstraint& contact = pools.m_contacts[c.m_frictionIndex];
+		const btScalar normal = contact.m_appliedImpulse;
+		if (!(normal > btScalar(0))) continue;
+		// One end free in this layer, the other its support (fixated here, or static).
+		const bool lowA = m_fixated[c.m_solverBodyIdA] != 0 || !dynamicBody(c.m_solverBodyIdA);
+		const bool lowB = m_fixated[c.m_solverBodyIdB] != 0 || !dynamicBody(c.m_solverBodyIdB);
+		if (lowA == lowB) continue;
+		const int id = lowA ? c.m_solverBodyIdB : c.m_solverBodyIdA;
+		const btRigidBody* rb = dynamicBody(id);
+		const int node = m_nodeOfSolverBody[id];
+		if (!rb || node < 0 || compositeOf(id) >= 0) continue;
+		// A body in a joint moves with what it is jointed to, which the composite does not model.
+		if (rb->getNumConstraintRefs() > 0) continue;
+		// Sliding: the friction at its Coulomb bound and still slipping after the global pass.
+		if (!(btFabs(c.m_appliedImpulse) >= kAtCoulombLimit * c.m_friction * normal)) continue;
+		if (!(btFabs(btRowVelocityError(c, bodies)) > slip)) continue;
+
+		btSlidingComposite comp;
+		comp.m_base = id;
+		comp.m_node = node;
+		comp.m_layer = layer;
+		const btVector3& n = contact.m_contactNormal1.isZero() ? contact.m_contactNormal2 : contact.m_contactNormal1;
+		comp.m_normal = n.length2() > SIMD_EPSILON ? n.normalized() : btVector3(0, 1, 0);
+		// The sub-stack: every dynamic body above the base through contact rows, layer by layer.
+		comp.m_firstMember = m_compositeMembers.size();
+		m_compositeMembers.push_back(id);
+		m_inComposite[id] = 1;
+		btScalar mass = btScalar(1) / rb->getInvMass();
+		const int height = m_layers->getHeight(node);
+		for (int k = layer + 1; k < m_numLayers; ++k)
+			for (int i = m_contactStart[k]; i < m_contactStart[k + 1]; ++i)
+			{
+				const btSolverConstraint& row = pools.m_contacts[m_contactRows[i]];
+				const int a = row.m_solverBodyIdA, b = row.m_solverBodyIdB;
+				if (m_inComposite[a] == m_inComposite[b]) continue;
+				const int up = m_inComposite[a] ? b : a;
+				const btRigidBody* upper = dynamicBody(up);
+				const int upNode = m_nodeOfSolverBody[up];
+				if (!upper || upNode < 0 || upper->getNumConstraintRefs() > 0 || m_layers->getHeight(upNode) <= height) continue;
+				// Resting on it: the contact carried a load last step (a body landing now is an impact).
+				const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
+				if (!cp || !(cp->m_appliedImpulse > btScalar(0))) continue;
+				m_inComposite[up] = 1;
+				m_compositeMembers.push_back(up);
+				mass += btScalar(1) / upper->getInvMass();
+			}
+		comp.m_numMembers = m_compositeMembers.size() - comp.m_firstMember;
+		for (int j = 0; j < comp.m_numMembers; ++j) m_inComposite[m_compositeMembers[comp.m_firstMember + j]] = 0;
+		comp.m_massRatio = mass * rb->getInvMass();
+		// The sub-stack sticks: it starts at its momentum's velocity across the support.
+		btEqualizeAcross(bodies, &m_compositeMembers[comp.m_firstMember], comp.m_numMembers, comp.m_normal);
+		btSolverBody& base = bodies[id];
+		comp.m_velocityBefore = base.m_linearVelocity + base.m_externalForceImpulse + base.internalGetDeltaLinearVelocity();
+		comp.m_savedInvMass = base.internalGetInvMass();
+		m_compositeOf[id] = m_composites.size();
+		m_composites.push_back(comp);
+	}
+	markFixated(layer, 0);
+	for (int i = first; i < m_composites.size(); ++i) m_active.push_back(i);
+}
+
+void btLayeredPasses::recordComposites(const btSolverPools& pools)
+{
+	for (int i = 0; i < m_active.size(); ++i)
+	{
+		const btSlidingComposite& comp = m_composites[m_active[i]];
+		btSolverBody& base = pools.m_bodies[comp.m_base];
+		const btScalar massB = btScalar(1) / base.m_originalBody->getInvMass();
+		const btVector3 after = base.m_linearVelocity + base.m_externalForceImpulse + base.internalGetDeltaLinearVelocity();
+		// The base moved as if the bodies above were dragged along: the load they owe it for that,
+		// -(M - m_B) dv across the support, is felt already (the weight pass hands it only the rest).
+		btVector3 felt = (after - comp.m_velocityBefore) * (-(comp.m_massRatio - btScalar(1)) * massB);
+		felt -= comp.m_normal * felt.dot(comp.m_normal);
+		m_withheld.add(comp.m_node, -felt, btVector3(0, 0, 0));
+		m_compositeOf[comp.m_base] = -1;
+	}
+	m_active.resize(0);
+}
+
+void btLayeredPasses::activateComposites(int layer, const btSolverPools& pools, btScalar tolerance)
+{
+	m_active.resize(0);
+	for (int i = 0; i < m_composites.size(); ++i)
+	{
+		btSlidingComposite& comp = m_composites[i];
+		if (comp.m_layer != layer) continue;
+		const int local = freeIndexOf(layer, comp.m_node);
+		// The load handed to the base across its support is what the composite did not predict:
+		// the sub-stack did not move with it (a body above slid), so it is solved alone.
+		btVector3 load = local >= 0 ? m_before[local].m_loadLinear : btVector3(0, 0, 0);
+		load -= comp.m_normal * load.dot(comp.m_normal);
+		comp.m_held = local >= 0 && load.length() <= tolerance;
+		if (!comp.m_held) continue;
+		comp.m_savedInvMass = pools.m_bodies[comp.m_base].internalGetInvMass();
+		m_compositeOf[comp.m_base] = i;
+		m_active.push_back(i);
+	}
+}
+
+void btLayeredPasses::shareCompositeMotion(int layer, const btSolverPools& pools)
+{
+	for (int a = 0; a < m_active.size(); ++a)
+	{
+		btSlidingComposite& comp = m_composites[m_active[a]];
+		comp.m_shift.setZero();
+		const int local = freeIndexOf(layer, comp.m_node);
+		if (local < 0) continue;
+		btSolverBody& base = pools.m_bodies[comp.m_base];
+		// The impulse the re-solve's rows gave the base (its load transfer with m_B, its friction
+		// sweeps with M), taken by the whole composite.
+		btVector3 impulse(0, 0, 0);
+		int row = 0;
+		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+			const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
+			if (c.m_solverBodyIdA == comp.m_base) impulse += c.m_contactNormal1 * change;
+			else if (c.m_solverBodyIdB == comp.m_base) impulse += c.m_contactNormal2 * change;
+		});
+		btVector3 shift = impulse * (base.m_originalBody->getInvMass() / comp.m_massRatio);
+		shift -= comp.m_normal * shift.dot(comp.m_normal);
+		const btVector3 target = m_before[local].m_deltaLinear + m_before[local].m_loadLinear + shift;
+		btVector3 correction = target - base.internalGetDeltaLinearVelocity();
+		correction -= comp.m_normal * correction.dot(comp.m_normal);
+		base.internalGetDeltaLinearVelocity() += correction;
+		comp.m_shift = shift;
+	}
+}
+
+void btLayeredPasses::deactivateComposites(bool moveMembers, const btSolverPools& pools)
+{
+	for (int a = 0; a < m_active.size(); ++a)
+	{
+		btSlidingComposite& comp = m_composites[m_active[a]];
+		m_compositeOf[comp.m_base] = -1;
+		if (!moveMembers)
+		{
+			comp.m_held = false;  // a rejected layer keeps its state from before its load
+			continue;
+		}
+		for (int j = 1; j < comp.m_numMembers; ++j)
+			pools.m_bodies[m_compositeMembers[comp.m_firstMember + j]].internalGetDeltaLinearVelocity() += comp.m_shift;
+	}
+	m_active.resize(0);
+}
+
+int btLayeredPasses::finishComposites(const btSolverPools& pools)
+{
+	for (int i = 0; i < m_composites.size(); ++i)
+	{
+		const btSlidingComposite& comp = m_composites[i];
+		if (comp.m_held) btEqualizeAcross(pools.m_bodies, &m_compositeMembers[comp.m_firstMember], comp.m_numMembers, comp.m_normal);
+	}
+	return m_composites.size();
 }

@@ -18,6 +18,7 @@ subject to the following restrictions:
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
 #include "btLayerFixation.h"
 #include "btLoadTransfer.h"
+#include "btSlidingComposite.h"
 #include "btWithheldReactions.h"
 
 class btPersistentManifold;
@@ -34,6 +35,9 @@ struct btWeightPassParams
 	btScalar m_tipGain = 1;           ///< a converged re-solve may speed a body that tips or slides up by this share of |g| dt
 	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
 	bool m_transferSmallLoads = true; ///< D20: loads below m_convergedSpeed are transferred, not re-solved
+	/// D23, m/s: a sliding base's composite holds in the weight pass while the load handed to it
+	/// across its support changes its velocity by at most this (else it is re-solved alone)
+	btScalar m_compositeTolerance = 0;
 };
 
 /// The up pass's schedule for each layer (D7, D19).
@@ -44,6 +48,9 @@ struct btLayerSweeps
 	int m_min = -1;                ///< fewest sweeps before the convergence test ends the layer; negative: always m_max
 	btScalar m_convergedSpeed = 0; ///< m/s: a sweep that changed no row's velocity by more ends the layer
 	bool m_block = false;          ///< solve each free body's support rows as one block first (btSupportBlock.h)
+	/// D23, m/s: a free body whose support friction is at its Coulomb limit and slips by more than
+	/// this (at setup and after the global pass) carries what rests on it; 0: never
+	btScalar m_compositeSlip = 0;
 };
 
 /// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
@@ -118,8 +125,26 @@ public:
 	/// *rejected).
 	int solveWeightPass(int sweeps, const btLayerFixationParams& params, const btSolverPools& pools, const btWeightPassParams& weight, int* rejected);
 
+	/// D23, after setup and the warm start, before any pass: which friction rows slip by more
+	/// than `speed` (m/s) as the step begins (btRowSlipAtSetup).
+	void markSlipsAtSetup(const btSolverPools& pools, btScalar speed);
+	/// D23, after the weight pass: each composite the weight pass held moves as one across its
+	/// support (btEqualizeAcross). Returns the number of composites this step.
+	int finishComposites(const btSolverPools& pools);
+
 
 private:
+	/// D23: the layer's sliding bases (before fixation), their sub-stacks equalized; and, after the
+	/// layer's sweeps, the load each one's extra mass took booked as felt.
+	void formComposites(int layer, const btSolverPools& pools, btScalar slip);
+	void recordComposites(const btSolverPools& pools);
+	/// D23, weight pass: the layer's composites active again, unless the load handed to the base
+	/// across its support exceeds `tolerance` (m/s); and the composites' motion after the re-solve.
+	void activateComposites(int layer, const btSolverPools& pools, btScalar tolerance);
+	void shareCompositeMotion(int layer, const btSolverPools& pools);
+	void deactivateComposites(bool moveMembers, const btSolverPools& pools);
+	int compositeOf(int solverBody) const { return solverBody < m_compositeOf.size() ? m_compositeOf[solverBody] : -1; }
+	int freeIndexOf(int layer, int node) const;
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);
 	/// Zero (and keep) the inverse mass of the layer's lower bodies' solver bodies; and restore it.
@@ -219,6 +244,14 @@ private:
 	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
 	const btPairLoad* findPairLoad(const void* manifold) const;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
+	// D23: this group's composites (every layer's), their members (base first), the layer's active
+	// ones and per solver body the active composite (-1: none); per friction row its slip at setup.
+	btAlignedObjectArray<btSlidingComposite> m_composites;
+	btAlignedObjectArray<int> m_compositeMembers;
+	btAlignedObjectArray<int> m_active;
+	btAlignedObjectArray<int> m_compositeOf;
+	btAlignedObjectArray<char> m_slipsAtSetup;
+	btAlignedObjectArray<char> m_inComposite;  // per solver body, scratch of formComposites
 };
 
 #endif  // BT_SHOCK_PROPAGATION_LAYERED_PASSES_H

@@ -234,6 +234,10 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	// contact's impulse it felt then.
 	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING)
 		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_diagnostics.m_warmStartCoupling);
+	// D23: the friction rows that slip as the step begins (last step's velocities, this step's forces).
+	const bool composites = m_settings.m_weightFeeling && m_settings.m_diagnostics.m_slidingComposites;
+	const btScalar compositeSlip = m_settings.m_diagnostics.m_compositeSlip * largestGravity() * info.m_timeStep;
+	if (composites) m_passes->markSlipsAtSetup(pools, compositeSlip);
 	m_stats.m_timeSetupMs += millisecondsSince(clock);
 
 	// Global pass: Bullet's own sweeps over every row, every body free; it ends early once
@@ -269,6 +273,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	sweeps.m_block = m_settings.m_diagnostics.m_supportBlocks;
 	sweeps.m_min = m_settings.m_layerMinIterations;
 	sweeps.m_convergedSpeed = convergedSpeed;
+	sweeps.m_compositeSlip = composites ? compositeSlip : btScalar(0);
 	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_stats.m_numLayerSweeps += m_passes->solveLayer(k, sweeps, params, weightFeeling, pools);
 	m_stats.m_timeLayersMs += millisecondsSince(clock);
 	if (weightFeeling)
@@ -283,10 +288,12 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_tipMargin = m_settings.m_diagnostics.m_weightGuardTipMargin;
 		weight.m_convergedSpeed = convergedSpeed;
 		weight.m_transferSmallLoads = m_settings.m_diagnostics.m_transferSmallLoads;
+		weight.m_compositeTolerance = composites ? compositeSlip : btScalar(0);
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
 															   weight, &m_stats.m_numWeightRejections);
+		m_stats.m_numSlidingComposites += m_passes->finishComposites(pools);
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 

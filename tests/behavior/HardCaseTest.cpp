@@ -206,15 +206,21 @@ struct PitResult
 	double fastestLate = 0;  // m/s, fastest body in the last 5 s
 };
 
+/// The deepest penetration and the fastest late body over three piles (seeds 1-3): a pile is
+/// chaotic, and any change to a solver reorders its impacts, so one seed's depth moves by 30%
+/// between two equally good solvers (docs/design.md, D23).
 PitResult dropIntoPit(const harness::SolverSpec& solver)
 {
-	harness::Trial run(solver, "dense_random", {{"seed", 2}});
 	PitResult r;
-	for (int i = 0; i < 600; ++i)
+	for (int seed = 1; seed <= 3; ++seed)
 	{
-		run.simulation().step();
-		r.deepest = std::max(r.deepest, harness::maxPenetration(*run.simulation().world().getDispatcher()));
-		if (i >= 300) r.fastestLate = std::max(r.fastestLate, harness::maxSpeed(run.bodies()));
+		harness::Trial run(solver, "dense_random", {{"seed", double(seed)}});
+		for (int i = 0; i < 600; ++i)
+		{
+			run.simulation().step();
+			r.deepest = std::max(r.deepest, harness::maxPenetration(*run.simulation().world().getDispatcher()));
+			if (i >= 300) r.fastestLate = std::max(r.fastestLate, harness::maxSpeed(run.bodies()));
+		}
 	}
 	return r;
 }
@@ -222,9 +228,9 @@ PitResult dropIntoPit(const harness::SolverSpec& solver)
 
 TEST(HardCaseShock, CubesDroppedIntoAPitAreStoppedAtTheirContacts)
 {
-	// 100 cubes dropped into a pit: every landing is stopped at its contact, so the pile is no
+	// 100 cubes dropped into a pit: every landing is stopped at its contact, so the piles are no
 	// deeper than stock SI's (measured 0.14 to 0.17 m of a 0.5 m cube over three seeds) and
-	// settles. Since the one-setup step (D15) speculative contacts use the step's own dt, so the
+	// settle. Since the one-setup step (D15) speculative contacts use the step's own dt, so the
 	// dynamics no longer misses landings (D11, the approach stop that caught them, is retired):
 	// measured 0.053 m.
 	const PitResult stock = dropIntoPit(spec::stock(10));

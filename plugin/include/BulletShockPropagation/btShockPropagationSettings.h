@@ -130,6 +130,20 @@ struct btShockPropagationDiagnostics
 	/// them all. Off: always ceil(f N) sweeps (measured in docs/design.md, D21).
 	bool m_convergedGlobalPass = true;
 
+	/// D23: a free body whose support friction is at its Coulomb limit and slips (by more than
+	/// m_compositeSlip |g| dt, at the step's start and after the global pass) carries the inertia
+	/// of everything resting on it: its friction rows are swept with the mass of that sub-stack,
+	/// which moves with it across the support, in the layer pass and in the weight pass. Off:
+	/// a sliding base is solved alone and the bodies above are settled at its velocity before it
+	/// feels them; a pushed stack then comes apart (measured in docs/design.md, D23).
+	bool m_slidingComposites = true;
+
+	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
+	/// 9.81 m/s^2 and 60 Hz, ten times the convergence speed m_weightConvergence), and the largest
+	/// velocity change across the support that the load handed down to a composite's base may make
+	/// before the composite is dropped for that step (the sub-stack did not move with its base).
+	btScalar m_compositeSlip = btScalar(0.06);
+
 	/// D16 convergence test of a weight-pass re-solve, as a share of |g| dt (unitless): a re-solve
 	/// whose last sweep changed no row's velocity by more than this has converged and stands
 	/// (1 mm/s at 9.81 m/s^2 and 60 Hz).

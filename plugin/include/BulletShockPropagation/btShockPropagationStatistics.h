@@ -29,6 +29,7 @@ struct btShockPropagationStatistics
 	int m_numLayerSweeps = 0;     ///< PGS sweeps of the layer passes, over all layers (D19: they end once converged)
 	int m_numWeightSweeps = 0;    ///< PGS sweeps of the weight pass, over all its layers (D13)
 	int m_numWeightRejections = 0;///< weight-pass layers that could not carry their load (D13 guard)
+	int m_numSlidingComposites = 0;///< sliding bases that carried what rests on them (D23)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).
