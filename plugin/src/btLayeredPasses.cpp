@@ -109,10 +109,12 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	m_slipsAtSetup.resize(0);
 	m_compositeOf.resize(numSolverBodies);
 	m_inComposite.resize(numSolverBodies);
+	m_carried.resize(numSolverBodies);
 	for (int i = 0; i < numSolverBodies; ++i)
 	{
 		m_compositeOf[i] = -1;
 		m_inComposite[i] = 0;
+		m_carried[i] = 0;
 	}
 	m_withheld.reset(solverBodyOfNode.size(), pools.m_contacts.size());
 	m_pushSpeed.resize(solverBodyOfNode.size());
@@ -897,7 +899,8 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 		const int id = lowA ? c.m_solverBodyIdB : c.m_solverBodyIdA;
 		const btRigidBody* rb = dynamicBody(id);
 		const int node = m_nodeOfSolverBody[id];
-		if (!rb || node < 0 || compositeOf(id) >= 0) continue;
+		// A body already carried by a composite below it moves with that composite.
+		if (!rb || node < 0 || compositeOf(id) >= 0 || m_carried[id]) continue;
 		// A body in a joint moves with what it is jointed to, which the composite does not model.
 		if (rb->getNumConstraintRefs() > 0) continue;
 		// Sliding: the friction at its Coulomb bound and still slipping after the global pass.
@@ -934,7 +937,11 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 				mass += btScalar(1) / upper->getInvMass();
 			}
 		comp.m_numMembers = m_compositeMembers.size() - comp.m_firstMember;
-		for (int j = 0; j < comp.m_numMembers; ++j) m_inComposite[m_compositeMembers[comp.m_firstMember + j]] = 0;
+		for (int j = 0; j < comp.m_numMembers; ++j)
+		{
+			m_inComposite[m_compositeMembers[comp.m_firstMember + j]] = 0;
+			m_carried[m_compositeMembers[comp.m_firstMember + j]] = 1;
+		}
 		comp.m_massRatio = mass * rb->getInvMass();
 		// The sub-stack sticks: it starts at its momentum's velocity across the support.
 		btEqualizeAcross(bodies, &m_compositeMembers[comp.m_firstMember], comp.m_numMembers, comp.m_normal);

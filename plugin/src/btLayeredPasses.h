@@ -252,6 +252,7 @@ private:
 	btAlignedObjectArray<int> m_compositeOf;
 	btAlignedObjectArray<char> m_slipsAtSetup;
 	btAlignedObjectArray<char> m_inComposite;  // per solver body, scratch of formComposites
+	btAlignedObjectArray<char> m_carried;      // per solver body: in a composite's sub-stack this step
 };
 
 #endif  // BT_SHOCK_PROPAGATION_LAYERED_PASSES_H
