@@ -329,7 +329,7 @@ int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const bt
 		if (sweeps.m_min >= 0 && !joints && iteration + 1 >= sweeps.m_min && change <= converged2) break;
 	}
 	release(layer, withhold, pools);
-	if (m_active.size()) recordComposites(pools);
+	if (m_active.size()) carryComposites(layer, pools);
 	return run;
 }
 
@@ -942,6 +942,12 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 			m_inComposite[m_compositeMembers[comp.m_firstMember + j]] = 0;
 			m_carried[m_compositeMembers[comp.m_firstMember + j]] = 1;
 		}
+		if (comp.m_numMembers < 2)
+		{
+			// Nothing rests on it: a body sliding alone is solved as it is.
+			m_compositeMembers.resize(comp.m_firstMember);
+			continue;
+		}
 		comp.m_massRatio = mass * rb->getInvMass();
 		// The sub-stack sticks: it starts at its momentum's velocity across the support.
 		btEqualizeAcross(bodies, &m_compositeMembers[comp.m_firstMember], comp.m_numMembers, comp.m_normal);
@@ -955,19 +961,29 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 	for (int i = first; i < m_composites.size(); ++i) m_active.push_back(i);
 }
 
-void btLayeredPasses::recordComposites(const btSolverPools& pools)
+void btLayeredPasses::carryComposites(int layer, const btSolverPools& pools)
 {
 	for (int i = 0; i < m_active.size(); ++i)
 	{
-		const btSlidingComposite& comp = m_composites[m_active[i]];
+		btSlidingComposite& comp = m_composites[m_active[i]];
 		btSolverBody& base = pools.m_bodies[comp.m_base];
-		const btScalar massB = btScalar(1) / base.m_originalBody->getInvMass();
-		const btVector3 after = base.m_linearVelocity + base.m_externalForceImpulse + base.internalGetDeltaLinearVelocity();
-		// The base moved as if the bodies above were dragged along: the load they owe it for that,
-		// -(M - m_B) dv across the support, is felt already (the weight pass hands it only the rest).
-		btVector3 felt = (after - comp.m_velocityBefore) * (-(comp.m_massRatio - btScalar(1)) * massB);
-		felt -= comp.m_normal * felt.dot(comp.m_normal);
-		m_withheld.add(comp.m_node, -felt, btVector3(0, 0, 0));
+		// The impulse the layer's rows gave the base, across its support, is the composite's: the
+		// base and the sub-stack move by it over M (momentum kept; the bodies above then have
+		// nothing left to drag, and hand down no reaction for it).
+		btVector3 impulse(0, 0, 0);
+		int row = 0;
+		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+			const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
+			if (c.m_solverBodyIdA == comp.m_base) impulse += c.m_contactNormal1 * change;
+			else if (c.m_solverBodyIdB == comp.m_base) impulse += c.m_contactNormal2 * change;
+		});
+		btVector3 shift = impulse * (base.m_originalBody->getInvMass() / comp.m_massRatio);
+		shift -= comp.m_normal * shift.dot(comp.m_normal);
+		const btVector3 now = base.m_linearVelocity + base.m_externalForceImpulse + base.internalGetDeltaLinearVelocity();
+		btVector3 correction = comp.m_velocityBefore + shift - now;
+		correction -= comp.m_normal * correction.dot(comp.m_normal);
+		base.internalGetDeltaLinearVelocity() += correction;
+		for (int j = 1; j < comp.m_numMembers; ++j) pools.m_bodies[m_compositeMembers[comp.m_firstMember + j]].internalGetDeltaLinearVelocity() += shift;
 		m_compositeOf[comp.m_base] = -1;
 	}
 	m_active.resize(0);

@@ -135,9 +135,9 @@ public:
 
 private:
 	/// D23: the layer's sliding bases (before fixation), their sub-stacks equalized; and, after the
-	/// layer's sweeps, the load each one's extra mass took booked as felt.
+	/// layer's sweeps, each sub-stack moved across the support as its base moved.
 	void formComposites(int layer, const btSolverPools& pools, btScalar slip);
-	void recordComposites(const btSolverPools& pools);
+	void carryComposites(int layer, const btSolverPools& pools);
 	/// D23, weight pass: the layer's composites active again, unless the load handed to the base
 	/// across its support exceeds `tolerance` (m/s); and the composites' motion after the re-solve.
 	void activateComposites(int layer, const btSolverPools& pools, btScalar tolerance);

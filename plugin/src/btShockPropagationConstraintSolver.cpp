@@ -27,6 +27,7 @@ subject to the following restrictions:
 #include "btPositionCorrection.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <new>
 #include <stdexcept>

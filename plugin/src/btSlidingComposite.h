@@ -34,10 +34,12 @@ subject to the following restrictions:
 ///     common momentum velocity, sum(m_i v_i) / M (momentum kept: the sub-stack sticks);
 ///  2. B's friction rows against its support are swept with B's linear inverse mass 1 / M (its
 ///     normal rows keep m_B: the composite only changes sliding, not support);
-///  3. B moved as if the bodies above had been dragged along: the load they will hand down for
-///     that, -(M - m_B) dv_B across n, is booked as already felt, so the weight pass hands B only
-///     the rest. The weight pass sweeps B's friction rows with 1 / M again and moves S by the
-///     velocity change their impulse gives the composite.
+///  3. after B's layer, S moves across n by B's change dv: the rows' impulse M dv is the
+///     composite's momentum, and the bodies above have nothing left to drag (no reaction to
+///     hand down for it);
+///  4. the weight pass sweeps B's friction rows with 1 / M again, unless the load handed to B
+///     across n shows that S did not move with it (then B is solved alone), and moves S by the
+///     velocity change that impulse gives the composite; at the end S is equalized once more.
 struct btSlidingComposite
 {
 	int m_base = -1;                 ///< solver body of B
