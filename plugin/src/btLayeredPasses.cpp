@@ -961,28 +961,31 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 	for (int i = first; i < m_composites.size(); ++i) m_active.push_back(i);
 }
 
+btVector3 btLayeredPasses::compositeShift(int layer, const btSlidingComposite& comp, const btSolverPools& pools)
+{
+	// The impulse the layer's rows gave the base since its pass began, across its support, taken by
+	// the whole composite (m/s).
+	btVector3 impulse(0, 0, 0);
+	int row = 0;
+	visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
+		if (c.m_solverBodyIdA == comp.m_base) impulse += c.m_contactNormal1 * change;
+		else if (c.m_solverBodyIdB == comp.m_base) impulse += c.m_contactNormal2 * change;
+	});
+	btVector3 shift = impulse * (pools.m_bodies[comp.m_base].m_originalBody->getInvMass() / comp.m_massRatio);
+	return shift - comp.m_normal * shift.dot(comp.m_normal);
+}
+
 void btLayeredPasses::carryComposites(int layer, const btSolverPools& pools)
 {
 	for (int i = 0; i < m_active.size(); ++i)
 	{
 		btSlidingComposite& comp = m_composites[m_active[i]];
 		btSolverBody& base = pools.m_bodies[comp.m_base];
-		// The impulse the layer's rows gave the base, across its support, is the composite's: the
-		// base and the sub-stack move by it over M (momentum kept; the bodies above then have
-		// nothing left to drag, and hand down no reaction for it).
-		btVector3 impulse(0, 0, 0);
-		int row = 0;
-		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
-			const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
-			if (c.m_solverBodyIdA == comp.m_base) impulse += c.m_contactNormal1 * change;
-			else if (c.m_solverBodyIdB == comp.m_base) impulse += c.m_contactNormal2 * change;
-		});
-		btVector3 shift = impulse * (base.m_originalBody->getInvMass() / comp.m_massRatio);
-		shift -= comp.m_normal * shift.dot(comp.m_normal);
-		const btVector3 now = base.m_linearVelocity + base.m_externalForceImpulse + base.internalGetDeltaLinearVelocity();
-		btVector3 correction = comp.m_velocityBefore + shift - now;
-		correction -= comp.m_normal * correction.dot(comp.m_normal);
-		base.internalGetDeltaLinearVelocity() += correction;
+		// The base and the sub-stack move by the impulse over M (momentum kept; the bodies above
+		// then have nothing left to drag, and hand down no reaction for it).
+		const btVector3 shift = compositeShift(layer, comp, pools);
+		btSetDeltaAcross(base, comp.m_velocityBefore - (base.m_linearVelocity + base.m_externalForceImpulse) + shift, comp.m_normal);
 		for (int j = 1; j < comp.m_numMembers; ++j) pools.m_bodies[m_compositeMembers[comp.m_firstMember + j]].internalGetDeltaLinearVelocity() += shift;
 		m_compositeOf[comp.m_base] = -1;
 	}
@@ -1017,23 +1020,10 @@ void btLayeredPasses::shareCompositeMotion(int layer, const btSolverPools& pools
 		comp.m_shift.setZero();
 		const int local = freeIndexOf(layer, comp.m_node);
 		if (local < 0) continue;
-		btSolverBody& base = pools.m_bodies[comp.m_base];
-		// The impulse the re-solve's rows gave the base (its load transfer with m_B, its friction
-		// sweeps with M), taken by the whole composite.
-		btVector3 impulse(0, 0, 0);
-		int row = 0;
-		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
-			const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
-			if (c.m_solverBodyIdA == comp.m_base) impulse += c.m_contactNormal1 * change;
-			else if (c.m_solverBodyIdB == comp.m_base) impulse += c.m_contactNormal2 * change;
-		});
-		btVector3 shift = impulse * (base.m_originalBody->getInvMass() / comp.m_massRatio);
-		shift -= comp.m_normal * shift.dot(comp.m_normal);
-		const btVector3 target = m_before[local].m_deltaLinear + m_before[local].m_loadLinear + shift;
-		btVector3 correction = target - base.internalGetDeltaLinearVelocity();
-		correction -= comp.m_normal * correction.dot(comp.m_normal);
-		base.internalGetDeltaLinearVelocity() += correction;
-		comp.m_shift = shift;
+		// The re-solve's impulse (its load transfer with m_B, its friction sweeps with M) moves the
+		// whole composite: the base by it over M after its load, the sub-stack when the layer stands.
+		comp.m_shift = compositeShift(layer, comp, pools);
+		btSetDeltaAcross(pools.m_bodies[comp.m_base], m_before[local].m_deltaLinear + m_before[local].m_loadLinear + comp.m_shift, comp.m_normal);
 	}
 }
 

@@ -142,6 +142,9 @@ private:
 	/// across its support exceeds `tolerance` (m/s); and the composites' motion after the re-solve.
 	void activateComposites(int layer, const btSolverPools& pools, btScalar tolerance);
 	void shareCompositeMotion(int layer, const btSolverPools& pools);
+	/// The velocity change across its support that the impulse the layer's rows gave a composite's
+	/// base since the layer's fixation (m_impulseBefore) gives the whole composite (m/s).
+	btVector3 compositeShift(int layer, const btSlidingComposite& comp, const btSolverPools& pools);
 	void deactivateComposites(bool moveMembers, const btSolverPools& pools);
 	int compositeOf(int solverBody) const { return solverBody < m_compositeOf.size() ? m_compositeOf[solverBody] : -1; }
 	int freeIndexOf(int layer, int node) const;

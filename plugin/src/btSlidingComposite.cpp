@@ -57,6 +57,13 @@ void btEqualizeAcross(btAlignedObjectArray<btSolverBody>& bodies, const int* mem
 	}
 }
 
+void btSetDeltaAcross(btSolverBody& body, const btVector3& delta, const btVector3& normal)
+{
+	btVector3 change = delta - body.internalGetDeltaLinearVelocity();
+	change -= normal * change.dot(normal);
+	body.internalGetDeltaLinearVelocity() += change;
+}
+
 void btCompositeFrictionRow(btSolverConstraint& row, const btSolverBody& bodyA, const btSolverBody& bodyB, btScalar ratioA, btScalar ratioB,
 							btScalar sor)
 {

@@ -67,6 +67,10 @@ btScalar btRowSlipAtSetup(const btSolverConstraint& row, const btAlignedObjectAr
 /// (momentum kept; the parts along `normal` untouched).
 void btEqualizeAcross(btAlignedObjectArray<btSolverBody>& bodies, const int* members, int count, const btVector3& normal);
 
+/// The body's velocity change so far (its solver body's delta) set to `delta` across `normal`; the
+/// part along `normal` untouched.
+void btSetDeltaAcross(btSolverBody& body, const btVector3& delta, const btVector3& normal);
+
 /// Re-derive a friction row whose end A (ratioA > 1) or B carries a composite: that end's linear
 /// inverse mass becomes m^-1 / ratio in the row's effective mass; its velocity error is kept.
 /// sor: the row's relaxation (btContactSolverInfo::m_sor).

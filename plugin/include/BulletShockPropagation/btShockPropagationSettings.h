@@ -134,10 +134,10 @@ struct btShockPropagationDiagnostics
 	/// than m_compositeSlip |g| dt, at the step's start and after the global pass) carries the
 	/// inertia of everything resting on it: its friction rows are swept with the mass of that
 	/// sub-stack, which moves with it across the support, in the layer pass and in the weight
-	/// pass. On, a pushed stack slides as one and a stack on a ramp gains the momentum of kinetic
-	/// friction (within 0.5%); off (the default), a sliding base is solved alone and runs away from
-	/// the boxes above. Off by default because hostile worlds exceed their energy or speed bounds
-	/// more often with it (1,000 seeds: 11 against 7 in float, 10 against 8 in double; measured in
+	/// pass. On, a stack sliding down a ramp gains the momentum of kinetic friction (within 1.3%;
+	/// off, 6-25% short) and a pushed stack's base mostly keeps with the boxes above (it can still
+	/// run away). Off by default because hostile worlds exceed their energy or speed bounds more
+	/// often with it (1,000 seeds: 10 against 7 in float, 11 against 8 in double; measured in
 	/// docs/design.md, section 4h).
 	bool m_slidingComposites = false;
 
