@@ -175,8 +175,8 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 		const bool fixA = m_fixated[row.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[row.m_solverBodyIdB] != 0;
 		// D23: a sliding base's friction rows see the mass of its composite.
-		const int compA = kind == BT_ROW_FRICTION ? compositeOf(row.m_solverBodyIdA) : -1;
-		const int compB = kind == BT_ROW_FRICTION ? compositeOf(row.m_solverBodyIdB) : -1;
+		const int compA = compositeRowEnd(row.m_solverBodyIdA, kind);
+		const int compB = compositeRowEnd(row.m_solverBodyIdB, kind);
 		if (!fixA && !fixB && compA < 0 && compB < 0) return;
 		m_backups.push_back(btBackupRow(row));
 		// The contact normal of the row's contact (friction rows find it through m_frictionIndex).
@@ -244,7 +244,7 @@ void btLayeredPasses::release(int layer, bool withhold, const btSolverPools& poo
 		const btScalar change = btScalar(c.m_appliedImpulse) - m_impulseBefore[row++];
 		const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 		const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
-		const bool composite = kind == BT_ROW_FRICTION && (compositeOf(c.m_solverBodyIdA) >= 0 || compositeOf(c.m_solverBodyIdB) >= 0);
+		const bool composite = compositeRowEnd(c.m_solverBodyIdA, kind) >= 0 || compositeRowEnd(c.m_solverBodyIdB, kind) >= 0;
 		if (!fixA && !fixB && !composite) return;
 		btRestoreRow(c, m_backups[backup++]);
 		if (!fixA && !fixB) return;
@@ -1000,6 +1000,7 @@ void btLayeredPasses::activateComposites(int layer, const btSolverPools& pools, 
 		btSlidingComposite& comp = m_composites[i];
 		if (comp.m_layer != layer) continue;
 		const int local = freeIndexOf(layer, comp.m_node);
+		comp.m_local = local;
 		// The load handed to the base across its support is what the composite did not predict:
 		// the sub-stack did not move with it (a body above slid), so it is solved alone.
 		btVector3 load = local >= 0 ? m_before[local].m_loadLinear : btVector3(0, 0, 0);
@@ -1018,8 +1019,7 @@ void btLayeredPasses::shareCompositeMotion(int layer, const btSolverPools& pools
 	{
 		btSlidingComposite& comp = m_composites[m_active[a]];
 		comp.m_shift.setZero();
-		const int local = freeIndexOf(layer, comp.m_node);
-		if (local < 0) continue;
+		const int local = comp.m_local;  // held composites have one (activateComposites)
 		// The re-solve's impulse (its load transfer with m_B, its friction sweeps with M) moves the
 		// whole composite: the base by it over M after its load, the sub-stack when the layer stands.
 		comp.m_shift = compositeShift(layer, comp, pools);

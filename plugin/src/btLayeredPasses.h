@@ -147,6 +147,9 @@ private:
 	btVector3 compositeShift(int layer, const btSlidingComposite& comp, const btSolverPools& pools);
 	void deactivateComposites(bool moveMembers, const btSolverPools& pools);
 	int compositeOf(int solverBody) const { return solverBody < m_compositeOf.size() ? m_compositeOf[solverBody] : -1; }
+	/// The active composite whose base is this end of a row, if the row is one its mass changes
+	/// (friction; fixate() re-derives and release() restores exactly these); else -1.
+	int compositeRowEnd(int solverBody, btSolverRowKind kind) const { return kind == BT_ROW_FRICTION ? compositeOf(solverBody) : -1; }
 	int freeIndexOf(int layer, int node) const;
 	void fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools);
 	void release(int layer, bool withhold, const btSolverPools& pools);

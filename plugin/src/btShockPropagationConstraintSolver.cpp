@@ -27,7 +27,6 @@ subject to the following restrictions:
 #include "btPositionCorrection.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
 #include <new>
 #include <stdexcept>
@@ -204,7 +203,8 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	// D22: an app's small N does not cut a layer's sub-problem short (the joints' layer keeps N).
 	const int layerSweeps = m_settings.m_layerIterations < 0 ? btMax(appLayerSweeps, m_settings.m_layerIterationFloor) : appLayerSweeps;
 	// The weight pass's convergence speed (D16), also D18's scale of "at rest" (m/s).
-	const btScalar convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
+	const btScalar gravity = largestGravity();  // m/s^2: the scale of the speeds below
+	const btScalar convergedSpeed = m_settings.m_diagnostics.m_weightConvergence * gravity * info.m_timeStep;
 
 	// One setup for the step, as a stock step: the app's time step and settings. Penetration is
 	// the position correction's (D6): no Baumgarte term, no split impulse.
@@ -237,7 +237,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		m_passes->withholdUnfeltWarmStart(pools, stepInfo.m_warmstartingFactor, m_settings.m_diagnostics.m_warmStartCoupling);
 	// D23: the friction rows that slip as the step begins (last step's velocities, this step's forces).
 	const bool composites = m_settings.m_weightFeeling && m_settings.m_diagnostics.m_slidingComposites;
-	const btScalar compositeSlip = m_settings.m_diagnostics.m_compositeSlip * largestGravity() * info.m_timeStep;
+	const btScalar compositeSlip = m_settings.m_diagnostics.m_compositeSlip * gravity * info.m_timeStep;
 	if (composites) m_passes->markSlipsAtSetup(pools, compositeSlip);
 	m_stats.m_timeSetupMs += millisecondsSince(clock);
 

@@ -45,6 +45,7 @@ struct btSlidingComposite
 	int m_base = -1;                 ///< solver body of B
 	int m_node = -1;                 ///< graph node of B
 	int m_layer = -1;                ///< B's layer (B is one of its free bodies)
+	int m_local = -1;                ///< weight pass: B's index among its layer's free bodies
 	btScalar m_massRatio = 1;        ///< M / m_B (unitless, >= 1)
 	btVector3 m_normal;              ///< unit normal of the sliding support contact
 	btVector3 m_velocityBefore;      ///< m/s: B's velocity when its layer pass began (after step 1)
