@@ -60,16 +60,19 @@ btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const
 	const btScalar target[6] = {-dv[0], -dv[1], -dv[2], -dw[0], -dw[1], -dw[2]};
 	// Normal equations of min |d_lambda|^2 subject to H d_lambda = target, H = [h_1 ... h_m]:
 	// d_lambda = H^T (H H^T)^-1 target, H H^T = sum of h_i h_i^T (6 x 6).
+	// Each row's h_i once (kept for the impulse changes below); the rows' products summed into the
+	// lower triangle, which is all the factorisation reads.
+	const int kCachedRows = 64;
+	btScalar cached[kCachedRows][6];
 	btScalar A[6][6] = {};
 	btScalar h[6];
 	for (int i = 0; i < numRows; ++i)
 	{
-		velocityPerImpulse(body, rows[i], h);
+		btScalar* hi = i < kCachedRows ? cached[i] : h;
+		velocityPerImpulse(body, rows[i], hi);
 		for (int a = 0; a < 6; ++a)
-			for (int b = 0; b <= a; ++b) A[a][b] += h[a] * h[b];
+			for (int b = 0; b <= a; ++b) A[a][b] += hi[a] * hi[b];
 	}
-	for (int a = 0; a < 6; ++a)
-		for (int b = a + 1; b < 6; ++b) A[a][b] = A[b][a];
 	btScalar y[6];
 	if (!solveRegularized(A, target, y)) return btScalar(0);
 
@@ -81,9 +84,10 @@ btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const
 			const btLoadTransferRow& r = rows[i];
 			if (r.m_contact != (pass == 0)) continue;
 			btSolverConstraint& c = *r.m_row;
-			velocityPerImpulse(body, r, h);
+			const btScalar* hi = i < kCachedRows ? cached[i] : h;
+			if (i >= kCachedRows) velocityPerImpulse(body, r, h);
 			btScalar change = 0;
-			for (int a = 0; a < 6; ++a) change += h[a] * y[a];
+			for (int a = 0; a < 6; ++a) change += hi[a] * y[a];
 			const btScalar before = c.m_appliedImpulse;
 			btScalar after = before + change;
 			if (r.m_contact)

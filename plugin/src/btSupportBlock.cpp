@@ -91,9 +91,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		error[i] = e;
 		++used;
 	}
-	if (used < 6) return false;
-	for (int a = 0; a < 6; ++a)
-		for (int b = a + 1; b < 6; ++b) A[a][b] = A[b][a];
+	if (used < 6) return false;  // the factorisation reads the lower triangle only
 	btCholesky6 cholesky;  // Jacobi-scaled: metres and radians weigh alike
 	if (!cholesky.factor(A, btScalar(0), btScalar(1e-3), true)) return false;
 
