@@ -788,10 +788,11 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 	for (int i = 0; i < numManifolds; ++i)
 	{
 		btPersistentManifold* m = manifolds[i];
-		const btPairLoad* found = findPairLoad(m);
-		if (!found || found->m_body0 != m->getBody0() || found->m_body1 != m->getBody1()) continue;
 		int fresh = 0;
 		for (int j = 0; j < m->getNumContacts(); ++j) fresh += isNewPoint(m->getContactPoint(j)) ? 1 : 0;
+		if (fresh == 0 || fresh == m->getNumContacts()) continue;  // (see below) before the look-up: most pairs
+		const btPairLoad* found = findPairLoad(m);
+		if (!found || found->m_body0 != m->getBody0() || found->m_body1 != m->getBody1()) continue;
 		const btScalar missing = found->m_total - totalNormalImpulse(*m);
 		// A pair whose points are all new is a new contact (a landing, a bounce): its last load was
 		// no resting load. Only points that replace or join persisting ones inherit.
@@ -833,12 +834,14 @@ void btLayeredPasses::endStep()
 {
 	m_pairLoadsLastStep.copyFromArray(m_pairLoadsThisStep);  // within the capacity: no allocation once settled
 	m_pairLoadsThisStep.resize(0);
-	if (m_pairLoadsLastStep.size() > 1)
-		m_pairLoadsLastStep.quickSort([](const btPairLoad& a, const btPairLoad& b) { return a.m_manifold < b.m_manifold; });
+	m_pairLoadsSorted = false;  // sorted on the first look-up: a step whose pairs kept their points needs none
 }
 
-const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* manifold) const
+const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* manifold)
 {
+	if (!m_pairLoadsSorted && m_pairLoadsLastStep.size() > 1)
+		m_pairLoadsLastStep.quickSort([](const btPairLoad& a, const btPairLoad& b) { return a.m_manifold < b.m_manifold; });
+	m_pairLoadsSorted = true;
 	int low = 0, high = m_pairLoadsLastStep.size() - 1;
 	while (low <= high)
 	{

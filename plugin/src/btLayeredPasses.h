@@ -245,10 +245,11 @@ private:
 		const void* m_body1;
 		btScalar m_total;
 	};
-	// D18: this step's records (appended per group) and last step's (sorted by manifold for lookup).
+	// D18: this step's records (appended per group) and last step's (sorted by manifold on the first look-up).
 	// Arrays keep their capacity, so a settled world's steps allocate nothing.
 	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
-	const btPairLoad* findPairLoad(const void* manifold) const;
+	const btPairLoad* findPairLoad(const void* manifold);
+	bool m_pairLoadsSorted = false;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 	// D23: this group's composites (every layer's), their members (base first), the layer's active
 	// ones and per solver body the active composite (-1: none); per friction row its slip at setup.
