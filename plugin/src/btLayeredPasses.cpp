@@ -99,6 +99,9 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	m_freeSlot[0] = 0;
 	for (int k = 0; k < m_numLayers; ++k) m_freeSlot[k + 1] = m_freeSlot[k] + (k < layers.getNumLayers() ? layers.getNumFreeBodies(k) : 0);
 	m_supportBegin.resize(m_freeSlot[m_numLayers]);
+	m_blockFactor.resize(m_freeSlot[m_numLayers]);
+	m_blockFactorValid.resize(m_freeSlot[m_numLayers]);
+	for (int i = 0; i < m_blockFactorValid.size(); ++i) m_blockFactorValid[i] = 0;
 	m_supportEnd.resize(m_freeSlot[m_numLayers]);
 	m_supportGathered.resize(m_numLayers);
 	for (int k = 0; k < m_numLayers; ++k) m_supportGathered[k] = 0;
@@ -663,10 +666,19 @@ void btLayeredPasses::solveSupportRows(int layer, const btSolverPools& pools, bt
 		const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
 		if (id < 0) continue;
 		btSolverBody& b = pools.m_bodies[id];
-		const int first = m_supportBegin[m_freeSlot[layer] + i];
-		const int n = m_supportEnd[m_freeSlot[layer] + i] - first;
+		const int slot = m_freeSlot[layer] + i;
+		const int first = m_supportBegin[slot];
+		const int n = m_supportEnd[slot] - first;
 		if (n > 0 && solve == BT_SUPPORT_BLOCK && compositeOf(id) >= 0) continue;  // D23: its friction is the composite's
-		if (n > 0 && solve == BT_SUPPORT_BLOCK) btSolveSupportBlock(b, pools.m_bodies, &m_transferRows[first], n, pools.m_contacts);
+		// D24: the block keeps its factor for the weight pass's transfer of the same body and rows.
+		if (n > 0 && solve == BT_SUPPORT_BLOCK)
+			btSolveSupportBlock(b, pools.m_bodies, &m_transferRows[first], n, pools.m_contacts, m_shareFactor ? &m_blockFactor[slot] : 0,
+								m_shareFactor ? &m_blockFactorValid[slot] : 0);
+		else if (n > 0 && m_shareFactor && m_blockFactorValid[slot])
+		{
+			btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[first], n, pools.m_contacts, m_blockFactor[slot]);
+			++m_sharedFactorTransfers;
+		}
 		else if (n > 0) btTransferLoad(b, m_before[i].m_deltaLinear, m_before[i].m_deltaAngular, &m_transferRows[first], n, pools.m_contacts);
 	}
 }

@@ -17,6 +17,7 @@ subject to the following restrictions:
 
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
 #include "btLayerFixation.h"
+#include "btCholesky6.h"
 #include "btLoadTransfer.h"
 #include "btSlidingComposite.h"
 #include "btWithheldReactions.h"
@@ -100,6 +101,15 @@ public:
 	void endStep();
 	/// Sweeps of the joint rows in their layer (at least the layer's own count).
 	void setJointSweeps(int sweeps) { m_jointSweeps = sweeps; }
+	/// D24: each support block keeps its factor for the weight pass's load transfer of the same rows.
+	void setSharedBlockFactor(bool share) { m_shareFactor = share; }
+	/// D24: load transfers solved with a block's factor since the last call (and the count reset).
+	int takeSharedFactorTransfers()
+	{
+		const int n = m_sharedFactorTransfers;
+		m_sharedFactorTransfers = 0;
+		return n;
+	}
 
 	/// Layer k with its lower bodies fixated: the support blocks (D19, if asked), then sweeps.
 	/// withhold: record the reactions fixation keeps from the lower bodies, for solveWeightPass.
@@ -250,6 +260,11 @@ private:
 	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
 	const btPairLoad* findPairLoad(const void* manifold);
 	bool m_pairLoadsSorted = false;
+	// D24: per free-body slot, the factor its support block kept for the weight pass (valid: 1).
+	btAlignedObjectArray<btCholesky6> m_blockFactor;
+	btAlignedObjectArray<char> m_blockFactorValid;
+	bool m_shareFactor = false;
+	int m_sharedFactorTransfers = 0;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 	// D23: this group's composites (every layer's), their members (base first), the layer's active
 	// ones and per solver body the active composite (-1: none); per friction row its slip at setup.

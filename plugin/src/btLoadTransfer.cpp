@@ -49,6 +49,42 @@ bool solveRegularized(btScalar A[6][6], const btScalar b[6], btScalar x[6])
 	cholesky.solve(b, x);
 	return true;
 }
+
+/// Projects each row's change (changeOf(i), its impulse change before projection) onto the
+/// row's limits and applies it to the body: contact normals first, so the friction bounds follow
+/// their new normal impulses. Returns the total impulse magnitude moved onto the rows.
+template <class ChangeOf>
+btScalar applyTransfer(btSolverBody& body, const btLoadTransferRow* rows, int numRows, const btConstraintArray& contacts, ChangeOf changeOf)
+{
+	btScalar moved = 0;
+	for (int pass = 0; pass < 2; ++pass)
+		for (int i = 0; i < numRows; ++i)
+		{
+			const btLoadTransferRow& r = rows[i];
+			if (r.m_contact != (pass == 0)) continue;
+			btSolverConstraint& c = *r.m_row;
+			btScalar change = changeOf(i);
+			const btScalar before = c.m_appliedImpulse;
+			btScalar after = before + change;
+			if (r.m_contact)
+				after = btMax(btScalar(0), after);
+			else
+			{
+				const int contact = c.m_frictionIndex;
+				const btScalar normal = (contact >= 0 && contact < contacts.size()) ? btScalar(contacts[contact].m_appliedImpulse) : btScalar(0);
+				const btScalar bound = c.m_friction * btMax(btScalar(0), normal);
+				after = btMax(-bound, btMin(bound, after));
+			}
+			if (!(after == after)) continue;  // NaN: the row is left to the sweeps
+			change = after - before;
+			if (change == btScalar(0)) continue;
+			c.m_appliedImpulse = after;
+			body.internalApplyImpulse((r.m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass(),
+									  r.m_sideA ? c.m_angularComponentA : c.m_angularComponentB, change);
+			moved += btFabs(change);
+		}
+	return moved;
+}
 }  // namespace
 
 btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const btVector3& beforeAngular, const btLoadTransferRow* rows,
@@ -76,36 +112,30 @@ btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const
 	btScalar y[6];
 	if (!solveRegularized(A, target, y)) return btScalar(0);
 
-	btScalar moved = 0;
-	// Contact normals first: the friction bounds follow their new normal impulses.
-	for (int pass = 0; pass < 2; ++pass)
-		for (int i = 0; i < numRows; ++i)
-		{
-			const btLoadTransferRow& r = rows[i];
-			if (r.m_contact != (pass == 0)) continue;
-			btSolverConstraint& c = *r.m_row;
-			const btScalar* hi = i < kCachedRows ? cached[i] : h;
-			if (i >= kCachedRows) velocityPerImpulse(body, r, h);
-			btScalar change = 0;
-			for (int a = 0; a < 6; ++a) change += hi[a] * y[a];
-			const btScalar before = c.m_appliedImpulse;
-			btScalar after = before + change;
-			if (r.m_contact)
-				after = btMax(btScalar(0), after);
-			else
-			{
-				const int contact = c.m_frictionIndex;
-				const btScalar normal = (contact >= 0 && contact < contacts.size()) ? btScalar(contacts[contact].m_appliedImpulse) : btScalar(0);
-				const btScalar bound = c.m_friction * btMax(btScalar(0), normal);
-				after = btMax(-bound, btMin(bound, after));
-			}
-			if (!(after == after)) continue;  // NaN: the row is left to the sweeps
-			change = after - before;
-			if (change == btScalar(0)) continue;
-			c.m_appliedImpulse = after;
-			body.internalApplyImpulse((r.m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass(),
-									  r.m_sideA ? c.m_angularComponentA : c.m_angularComponentB, change);
-			moved += btFabs(change);
-		}
-	return moved;
+	return applyTransfer(body, rows, numRows, contacts, [&](int i) {
+		const btScalar* hi = i < kCachedRows ? cached[i] : h;
+		if (i >= kCachedRows) velocityPerImpulse(body, rows[i], h);
+		btScalar change = 0;
+		for (int a = 0; a < 6; ++a) change += hi[a] * y[a];
+		return change;
+	});
+}
+
+btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const btVector3& beforeAngular, const btLoadTransferRow* rows,
+						int numRows, const btConstraintArray& contacts, const btCholesky6& blockFactor)
+{
+	const btRigidBody* rb = body.m_originalBody;
+	if (!rb || numRows == 0) return btScalar(0);
+	// M target: the momentum that undoes the load.
+	const btVector3 linear = (beforeLinear - body.internalGetDeltaLinearVelocity()) / rb->getInvMass();
+	const btVector3 angular = rb->getInvInertiaTensorWorld().inverse() * (beforeAngular - body.internalGetDeltaAngularVelocity());
+	const btScalar p[6] = {linear[0], linear[1], linear[2], angular[0], angular[1], angular[2]};
+	btScalar z[6];
+	blockFactor.solve(p, z);
+	const btVector3 zLinear(z[0], z[1], z[2]), zAngular(z[3], z[4], z[5]);
+	return applyTransfer(body, rows, numRows, contacts, [&](int i) {
+		const btSolverConstraint& c = *rows[i].m_row;
+		return rows[i].m_sideA ? c.m_contactNormal1.dot(zLinear) + c.m_relpos1CrossNormal.dot(zAngular)
+							   : c.m_contactNormal2.dot(zLinear) + c.m_relpos2CrossNormal.dot(zAngular);
+	});
 }

@@ -19,6 +19,8 @@ subject to the following restrictions:
 #include "BulletDynamics/ConstraintSolver/btSolverConstraint.h"
 #include "LinearMath/btAlignedObjectArray.h"
 
+struct btCholesky6;
+
 /// Load transfer of the downward pass (D16; private to the plugin).
 ///
 /// A body whose supports are fixated receives the impulse its loads pressed on it: a change of
@@ -46,5 +48,14 @@ struct btLoadTransferRow
 /// Returns the total impulse magnitude moved onto the rows.
 btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const btVector3& beforeAngular,
 						const btLoadTransferRow* rows, int numRows, const btConstraintArray& contacts);
+
+/// D24: the same transfer solved with the factor of A = J^T J the body's support block made of the
+/// same rows this step (btSupportBlock.h; J the rows' Jacobians on the body, M = W^-1 its mass and
+/// inertia). Since H = W J^T, H H^T = W A W and the least-norm change is d_lambda = J A^-1 M target:
+/// one solve with that factor instead of forming and factoring H H^T. Without the shift above, which
+/// only keeps that factorisation defined where the rows cannot reach; the block factors A only
+/// where they reach every direction (its pivot test). The projection is the one above.
+btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const btVector3& beforeAngular,
+						const btLoadTransferRow* rows, int numRows, const btConstraintArray& contacts, const btCholesky6& blockFactor);
 
 #endif  // BT_SHOCK_PROPAGATION_LOAD_TRANSFER_H

@@ -272,6 +272,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	sweeps.m_max = layerSweeps;
 	sweeps.m_jointLayerMax = appLayerSweeps;
 	sweeps.m_block = m_settings.m_diagnostics.m_supportBlocks;
+	m_passes->setSharedBlockFactor(weightFeeling && m_settings.m_diagnostics.m_loadTransfer && m_settings.m_diagnostics.m_sharedBlockFactor);
 	sweeps.m_min = m_settings.m_layerMinIterations;
 	sweeps.m_convergedSpeed = convergedSpeed;
 	sweeps.m_compositeSlip = composites ? compositeSlip : btScalar(0);
@@ -295,6 +296,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
 															   weight, &m_stats.m_numWeightRejections);
 		m_stats.m_numSlidingComposites += m_passes->finishComposites(pools);
+		m_stats.m_numSharedFactorTransfers += m_passes->takeSharedFactorTransfers();
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 

@@ -41,8 +41,9 @@ btRowSides sidesOf(const btLoadTransferRow& r)
 }  // namespace
 
 bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolverBody>& bodies, const btLoadTransferRow* rows, int numRows,
-						 const btConstraintArray& contacts)
+						 const btConstraintArray& contacts, btCholesky6* factorOut, char* factorValid)
 {
+	if (factorValid) *factorValid = 0;
 	const btRigidBody* rb = body.m_originalBody;
 	if (!rb || numRows < 6 || numRows > kMaxBlockRows || !(rb->getInvMass() > btScalar(0))) return false;
 	// Bullet's W J^T carries the factors; the momentum formula below assumes none.
@@ -94,6 +95,12 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	if (used < 6) return false;  // the factorisation reads the lower triangle only
 	btCholesky6 cholesky;  // Jacobi-scaled: metres and radians weigh alike
 	if (!cholesky.factor(A, btScalar(0), btScalar(1e-3), true)) return false;
+	// D24: kept for the weight pass's load transfer when it covers the transfer's rows (all of them).
+	if (factorOut && used == numRows)
+	{
+		*factorOut = cholesky;
+		*factorValid = 1;
+	}
 
 	// Velocity change (least squares), its momentum, and the impulses that deliver it.
 	btScalar du[6], p[6], z[6];

@@ -15,6 +15,7 @@ subject to the following restrictions:
 #ifndef BT_SHOCK_PROPAGATION_SUPPORT_BLOCK_H
 #define BT_SHOCK_PROPAGATION_SUPPORT_BLOCK_H
 
+#include "btCholesky6.h"
 #include "btLoadTransfer.h"
 
 /// The support block solve of the layer passes (D19; private to the plugin).
@@ -40,8 +41,12 @@ subject to the following restrictions:
 /// lowers): a projected step that does not is discarded, so the block never adds energy a PGS
 /// sweep would not.
 ///
+/// D24: given factorOut, the factor of A is kept for the weight pass's load transfer of the same
+/// body and rows (btLoadTransfer.h): *factorValid is 1 when the block factored A and every row took
+/// part (the transfer's rows), else 0.
+///
 /// Returns whether the block was solved (the rows' impulses and the body's velocity changed).
 bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolverBody>& bodies, const btLoadTransferRow* rows, int numRows,
-						 const btConstraintArray& contacts);
+						 const btConstraintArray& contacts, btCholesky6* factorOut = 0, char* factorValid = 0);
 
 #endif  // BT_SHOCK_PROPAGATION_SUPPORT_BLOCK_H

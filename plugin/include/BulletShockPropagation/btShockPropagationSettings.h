@@ -115,6 +115,13 @@ struct btShockPropagationDiagnostics
 	/// float (0.78 s) and creeps in double (measured in docs/design.md, D19).
 	bool m_supportBlocks = true;
 
+	/// D24: the weight pass's load transfer (D16) of a body solves with the factor its support
+	/// block (D19) made of the same rows this step (every row in the block) instead of forming and
+	/// factoring its own: one 6 x 6 factorisation per body and step where there were two. The same
+	/// least-norm transfer without the transfer's small regularising shift (measured in
+	/// docs/design.md, D24). Off: each factors its own.
+	bool m_sharedBlockFactor = true;
+
 	/// D20: a weight-pass layer whose loads all change its free bodies' velocities by at most the
 	/// convergence speed (m_weightConvergence |g| dt; linear change plus angular change times the
 	/// shape's bounding radius) is not re-solved: its support rows take the loads in one
