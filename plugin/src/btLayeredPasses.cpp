@@ -802,13 +802,14 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 		btPersistentManifold* m = manifolds[i];
 		int fresh = 0;
 		for (int j = 0; j < m->getNumContacts(); ++j) fresh += isNewPoint(m->getContactPoint(j)) ? 1 : 0;
-		if (fresh == 0 || fresh == m->getNumContacts()) continue;  // (see below) before the look-up: most pairs
+		// A pair whose points are all new is a new contact (a landing, a bounce): its last load was
+		// no resting load. Only points that replace or join persisting ones inherit. (Tested before
+		// the look-up: most pairs have no new point.)
+		if (fresh == 0 || fresh == m->getNumContacts()) continue;
 		const btPairLoad* found = findPairLoad(m);
 		if (!found || found->m_body0 != m->getBody0() || found->m_body1 != m->getBody1()) continue;
 		const btScalar missing = found->m_total - totalNormalImpulse(*m);
-		// A pair whose points are all new is a new contact (a landing, a bounce): its last load was
-		// no resting load. Only points that replace or join persisting ones inherit.
-		if (fresh == 0 || fresh == m->getNumContacts() || !(missing > btScalar(0))) continue;
+		if (!(missing > btScalar(0))) continue;
 		// Only a resting pair keeps its load: every new point's relative velocity is below restSpeed
 		// (a body that tips or slides off its support makes new points at a moving edge).
 		const btRigidBody* a = btRigidBody::upcast(m->getBody0());

@@ -127,15 +127,13 @@ btScalar btTransferLoad(btSolverBody& body, const btVector3& beforeLinear, const
 	const btRigidBody* rb = body.m_originalBody;
 	if (!rb || numRows == 0) return btScalar(0);
 	// M target: the momentum that undoes the load.
-	const btVector3 linear = (beforeLinear - body.internalGetDeltaLinearVelocity()) / rb->getInvMass();
-	const btVector3 angular = rb->getInvInertiaTensorWorld().inverse() * (beforeAngular - body.internalGetDeltaAngularVelocity());
-	const btScalar p[6] = {linear[0], linear[1], linear[2], angular[0], angular[1], angular[2]};
-	btScalar z[6];
+	btScalar p[6], z[6];
+	btMomentumOf(rb->getInvMass(), rb->getInvInertiaTensorWorld(), beforeLinear - body.internalGetDeltaLinearVelocity(),
+				 beforeAngular - body.internalGetDeltaAngularVelocity(), p);
 	blockFactor.solve(p, z);
 	const btVector3 zLinear(z[0], z[1], z[2]), zAngular(z[3], z[4], z[5]);
 	return applyTransfer(body, rows, numRows, contacts, [&](int i) {
-		const btSolverConstraint& c = *rows[i].m_row;
-		return rows[i].m_sideA ? c.m_contactNormal1.dot(zLinear) + c.m_relpos1CrossNormal.dot(zAngular)
-							   : c.m_contactNormal2.dot(zLinear) + c.m_relpos2CrossNormal.dot(zAngular);
+		const btRowSides s = btSidesOf(rows[i]);
+		return s.m_linear.dot(zLinear) + s.m_angular.dot(zAngular);
 	});
 }

@@ -42,6 +42,35 @@ struct btLoadTransferRow
 	bool m_contact;  ///< contact normal (else friction, bounded by its contact row)
 };
 
+/// A row's Jacobian on the body it transfers to (J_b) and on its other end (J_o).
+struct btRowSides
+{
+	const btVector3& m_linear;
+	const btVector3& m_angular;
+	const btVector3& m_otherLinear;
+	const btVector3& m_otherAngular;
+};
+
+inline btRowSides btSidesOf(const btLoadTransferRow& r)
+{
+	const btSolverConstraint& c = *r.m_row;
+	return r.m_sideA ? btRowSides{c.m_contactNormal1, c.m_relpos1CrossNormal, c.m_contactNormal2, c.m_relpos2CrossNormal}
+					 : btRowSides{c.m_contactNormal2, c.m_relpos2CrossNormal, c.m_contactNormal1, c.m_relpos1CrossNormal};
+}
+
+/// The momentum (linear, angular) M u of a velocity change u = (linear, angular) of a body with
+/// inverse mass invMass and world inverse inertia invInertia.
+inline void btMomentumOf(btScalar invMass, const btMatrix3x3& invInertia, const btVector3& linear, const btVector3& angular, btScalar out[6])
+{
+	const btVector3 p = linear / invMass;
+	const btVector3 l = invInertia.inverse() * angular;
+	for (int a = 0; a < 3; ++a)
+	{
+		out[a] = p[a];
+		out[3 + a] = l[a];
+	}
+}
+
 /// Undo the velocity change of `body` since its solver deltas were (beforeLinear, beforeAngular)
 /// through `rows` (see above), whose other ends are immovable while this runs. contacts: the
 /// step's contact pool (friction rows find their normal impulse through m_frictionIndex).

@@ -22,22 +22,6 @@ subject to the following restrictions:
 namespace
 {
 const int kMaxBlockRows = 64;  // a body with more support rows keeps PGS alone
-
-/// The row's Jacobian on the body (J_b) and on its other, immovable end (J_o).
-struct btRowSides
-{
-	const btVector3& m_linear;
-	const btVector3& m_angular;
-	const btVector3& m_otherLinear;
-	const btVector3& m_otherAngular;
-};
-
-btRowSides sidesOf(const btLoadTransferRow& r)
-{
-	const btSolverConstraint& c = *r.m_row;
-	return r.m_sideA ? btRowSides{c.m_contactNormal1, c.m_relpos1CrossNormal, c.m_contactNormal2, c.m_relpos2CrossNormal}
-					 : btRowSides{c.m_contactNormal2, c.m_relpos2CrossNormal, c.m_contactNormal1, c.m_relpos1CrossNormal};
-}
 }  // namespace
 
 bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolverBody>& bodies, const btLoadTransferRow* rows, int numRows,
@@ -73,7 +57,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		// body is not at rest, and its block is PGS's.
 		const btManifoldPoint* point = static_cast<const btManifoldPoint*>(contact->m_originalContactPoint);
 		if (!point || !(point->m_appliedImpulse > btScalar(0))) return false;
-		const btRowSides s = sidesOf(rows[i]);
+		const btRowSides s = btSidesOf(rows[i]);
 		const btSolverBody& other = bodies[rows[i].m_sideA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
 		btSolverBody& self = body;  // Bullet's delta accessors are not const
 		btSolverBody& fixed = const_cast<btSolverBody&>(other);
@@ -105,13 +89,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	// Velocity change (least squares), its momentum, and the impulses that deliver it.
 	btScalar du[6], p[6], z[6];
 	cholesky.solve(Je, du);
-	const btVector3 linearMomentum = btVector3(du[0], du[1], du[2]) / rb->getInvMass();
-	const btVector3 angularMomentum = invInertia.inverse() * btVector3(du[3], du[4], du[5]);
-	for (int a = 0; a < 3; ++a)
-	{
-		p[a] = linearMomentum[a];
-		p[3 + a] = angularMomentum[a];
-	}
+	btMomentumOf(rb->getInvMass(), invInertia, btVector3(du[0], du[1], du[2]), btVector3(du[3], du[4], du[5]), p);
 	cholesky.solve(p, z);
 	const btVector3 zLinear(z[0], z[1], z[2]), zAngular(z[3], z[4], z[5]);
 
@@ -123,7 +101,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		{
 			if (!use[i] || rows[i].m_contact != (pass == 0)) continue;
 			btSolverConstraint& c = *rows[i].m_row;
-			const btRowSides s = sidesOf(rows[i]);
+			const btRowSides s = btSidesOf(rows[i]);
 			old[i] = c.m_appliedImpulse;
 			btScalar after = old[i] + s.m_linear.dot(zLinear) + s.m_angular.dot(zAngular);
 			if (rows[i].m_contact)
@@ -142,7 +120,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	for (int i = 0; i < numRows; ++i)
 	{
 		if (!use[i]) continue;
-		const btRowSides s = sidesOf(rows[i]);
+		const btRowSides s = btSidesOf(rows[i]);
 		const btScalar d = btScalar(rows[i].m_row->m_appliedImpulse) - old[i];
 		impulseLinear += s.m_linear * d;
 		impulseAngular += s.m_angular * d;
