@@ -15,6 +15,7 @@ subject to the following restrictions:
 #include "btLayeredPasses.h"
 
 #include "btSupportBlock.h"
+#include "btTippingComposite.h"
 
 #include "BulletCollision/CollisionShapes/btCollisionShape.h"
 
@@ -407,6 +408,16 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	// down, and their bodies may sit in layers already final (a rejection could not undo them).
 	m_withJoints = false;
 	int total = 0;
+	if (weight.m_tippingComposites)
+	{
+		m_discardedLinear.resize(pools.m_bodies.size());
+		m_discardedAngular.resize(pools.m_bodies.size());
+		for (int i = 0; i < pools.m_bodies.size(); ++i)
+		{
+			m_discardedLinear[i].setZero();
+			m_discardedAngular[i].setZero();
+		}
+	}
 	for (int k = m_numLayers - 1; k >= 0; --k)
 	{
 		// The layer's free bodies before their load arrives (to judge and, if need be, undo the re-solve).
@@ -425,6 +436,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		{
 			const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
 			m_before[i].m_loadLinear = id < 0 ? btVector3(0, 0, 0) : pools.m_bodies[id].internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
+			m_before[i].m_loadAngular = id < 0 ? btVector3(0, 0, 0) : pools.m_bodies[id].internalGetDeltaAngularVelocity() - m_before[i].m_deltaAngular;
 		}
 		// D23: the layer's sliding bases move with their composites again.
 		if (weight.m_compositeTolerance > btScalar(0) && m_composites.size()) activateComposites(k, pools, weight.m_compositeTolerance);
@@ -458,6 +470,8 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		const bool converged = lastChange <= converged2;
 		if (withComposites) shareCompositeMotion(k, pools);
 		bool anyRejected = false;
+		m_tipFirst.resize(0);
+		m_tipMembers.resize(0);
 		for (int i = 0; i < numFree; ++i)
 		{
 			const int node = m_layers->getFreeBody(k, i);
@@ -470,6 +484,13 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
 			const btScalar before = (base + m_before[i].m_deltaLinear).length();
 			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
+			// D25: where statics says the body must tip, it tips with what rests on it, as one
+			// rigid body (tipWithMembers: kept only if the composite's statics says so too, its
+			// solve adds no energy and no member speeds up beyond m_tipGain steps of free fall;
+			// else the clauses below judge the body alone).
+			if (weight.m_tippingComposites && fall > btScalar(0) && !withComposites &&
+				loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin) && tipWithMembers(k, i, sweeps, weight, pools, &total))
+				continue;
 			if (converged && after <= before + weight.m_tipGain * fall && fall > btScalar(0))
 			{
 				const btVector3 dv = b.internalGetDeltaLinearVelocity() - m_before[i].m_deltaLinear;
@@ -490,6 +511,21 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			anyRejected = true;
 			break;
 		}
+		// D25: the members of the layer's tipping composites keep the rigid motion if the layer
+		// stands (their rejected loads are now in it), else they get their velocities back (the
+		// layer's own free bodies, the bases, then their state from before the load).
+		for (int t = 0; t < m_tipMembers.size(); ++t)
+		{
+			const int member = m_tipMembers[t];
+			if (anyRejected)
+			{
+				pools.m_bodies[member].internalGetDeltaLinearVelocity() = m_tipSaved[t].m_deltaLinear;
+				pools.m_bodies[member].internalGetDeltaAngularVelocity() = m_tipSaved[t].m_deltaAngular;
+				continue;
+			}
+			m_discardedLinear[member].setZero();
+			m_discardedAngular[member].setZero();
+		}
 		if (anyRejected)
 		{
 			// The layer keeps its state from before its load (every free body and row).
@@ -501,9 +537,16 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 				if (id < 0) continue;
 				pools.m_bodies[id].internalGetDeltaLinearVelocity() = m_before[i].m_deltaLinear;
 				pools.m_bodies[id].internalGetDeltaAngularVelocity() = m_before[i].m_deltaAngular;
+				if (weight.m_tippingComposites)
+				{
+					m_discardedLinear[id] += m_before[i].m_loadLinear;
+					m_discardedAngular[id] += m_before[i].m_loadAngular;
+				}
 			}
 			if (rejected) ++*rejected;
 		}
+		if (!anyRejected) m_tippingComposites += m_tipFirst.size();
+		for (int t = 0; t < m_tipMembers.size(); ++t) m_tipOf[m_tipMembers[t]] = 0;
 		release(k, true, pools);  // a rejected layer's rows changed nothing: nothing is withheld
 		if (withComposites) deactivateComposites(!anyRejected, pools);
 	}
@@ -722,6 +765,13 @@ bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPool
 		}
 	const btScalar down = -P.dot(up);
 	if (!(down > SIMD_EPSILON)) return false;  // nothing pressing down: no statics to judge
+	return lineOutsideSupport(layer, id, P, P.cross(A) / P.length2(), margin, pools);
+}
+
+bool btLayeredPasses::lineOutsideSupport(int layer, int id, const btVector3& P, const btVector3& d0, btScalar margin, const btSolverPools& pools)
+{
+	const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
+	const btVector3 up = -rb->getGravity().normalized();
 	// Support points: the contact points of the layer's rows with this body as the free end.
 	const btVector3 c = rb->getCenterOfMassPosition();
 	btVector3 u, v;
@@ -742,7 +792,6 @@ bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPool
 	}
 	if (m_hull.size() == 0) return false;
 	// The line of action: d x P = A, d = d0 + t P; at the support plane d . up = plane.
-	const btVector3 d0 = P.cross(A) / P.length2();
 	const btScalar t = (plane - d0.dot(up)) / P.dot(up);
 	const btVector3 d = d0 + P * t;
 	const btScalar px = d.dot(u), py = d.dot(v);
@@ -1068,4 +1117,192 @@ int btLayeredPasses::finishComposites(const btSolverPools& pools)
 		if (comp.m_held) btEqualizeAcross(pools.m_bodies, &m_compositeMembers[comp.m_firstMember], comp.m_numMembers, comp.m_normal);
 	}
 	return m_composites.size();
+}
+
+bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const btSolverPools& pools)
+{
+	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
+	if (m_tipOf.size() != bodies.size())
+	{
+		m_tipOf.resize(bodies.size());
+		for (int i = 0; i < bodies.size(); ++i) m_tipOf[i] = 0;
+	}
+	const auto eligible = [&](int body) -> const btRigidBody* {
+		const btSolverBody& b = bodies[body];
+		const btRigidBody* rb = b.m_originalBody;
+		if (!rb || !(rb->getInvMass() > btScalar(0)) || rb->getNumConstraintRefs() > 0) return 0;
+		if (b.m_linearFactor != btVector3(1, 1, 1) || b.m_angularFactor != btVector3(1, 1, 1)) return 0;
+		return rb;
+	};
+	const btRigidBody* baseBody = eligible(id);
+	if (!baseBody || m_tipOf[id] != 0 || m_nodeOfSolverBody[id] < 0) return false;
+	const btVector3 g = baseBody->getGravity();
+	if (!(g.length2() > SIMD_EPSILON)) return false;
+	const btVector3 up = -g.normalized();
+	const int first = m_tipMembers.size();
+	// A contact row on which `upper` rests on `lower`: it pushes now, along a normal within 60
+	// degrees of up into the upper body.
+	const auto restsOn = [&](const btSolverConstraint& row, int upper) {
+		if (!(row.m_appliedImpulse > btScalar(0))) return false;
+		const btVector3& n = row.m_solverBodyIdA == upper ? row.m_contactNormal1 : row.m_contactNormal2;
+		return n.dot(up) >= btScalar(0.5);
+	};
+	m_tipMembers.push_back(id);
+	m_tipOf[id] = mark;
+	bool clash = false;
+	for (int k = layer + 1; k < m_numLayers && !clash; ++k)
+		for (int r = m_contactStart[k]; r < m_contactStart[k + 1]; ++r)
+		{
+			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+			const int a = row.m_solverBodyIdA, b = row.m_solverBodyIdB;
+			const bool inA = m_tipOf[a] == mark, inB = m_tipOf[b] == mark;
+			if (inA == inB) continue;
+			const int lower = inA ? a : b, upper = inA ? b : a;
+			const int upperNode = m_nodeOfSolverBody[upper], lowerNode = m_nodeOfSolverBody[lower];
+			if (upperNode < 0 || lowerNode < 0 || m_layers->getHeight(upperNode) <= m_layers->getHeight(lowerNode)) continue;
+			if (!restsOn(row, upper) || !eligible(upper)) continue;
+			if (m_tipOf[upper] != 0)
+			{
+				clash = true;  // it rests on another tipping body too
+				break;
+			}
+			m_tipOf[upper] = mark;
+			m_tipMembers.push_back(upper);
+		}
+	// Only what rests on the composite alone: a body also resting on something outside it (and,
+	// in turn, what rests on that body) is left out. Members are in order of height.
+	for (int j = first + 1; j < m_tipMembers.size() && !clash; ++j)
+	{
+		const int member = m_tipMembers[j];
+		const int height = m_layers->getHeight(m_nodeOfSolverBody[member]);
+		const int k = height - 1;
+		if (k < 0 || k >= m_numLayers) continue;
+		for (int r = m_contactStart[k]; r < m_contactStart[k + 1]; ++r)
+		{
+			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+			if (row.m_solverBodyIdA != member && row.m_solverBodyIdB != member) continue;
+			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
+			if (m_tipOf[other] == mark || !restsOn(row, member)) continue;
+			m_tipOf[member] = -mark;  // left out (kept marked until the layer ends, then cleared)
+			break;
+		}
+	}
+	int kept = first;
+	for (int j = first; j < m_tipMembers.size(); ++j)
+	{
+		const int member = m_tipMembers[j];
+		if (m_tipOf[member] == mark)
+			m_tipMembers[kept++] = member;
+		else
+			m_tipOf[member] = 0;
+	}
+	m_tipMembers.resize(kept);
+	if (clash || kept - first < 2)
+	{
+		for (int j = first; j < m_tipMembers.size(); ++j) m_tipOf[m_tipMembers[j]] = 0;
+		m_tipMembers.resize(first);
+		return false;
+	}
+	return true;
+}
+
+bool btLayeredPasses::membersOutsideSupport(int layer, int id, int first, const btSolverPools& pools)
+{
+	// Statics of the composite as one rigid body: its weight acts through its centre of mass.
+	btScalar mass = 0;
+	btVector3 centre(0, 0, 0);
+	for (int j = first; j < m_tipMembers.size(); ++j)
+	{
+		const btRigidBody* rb = pools.m_bodies[m_tipMembers[j]].m_originalBody;
+		mass += btScalar(1) / rb->getInvMass();
+		centre += rb->getCenterOfMassPosition() / rb->getInvMass();
+	}
+	centre /= mass;
+	const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
+	return lineOutsideSupport(layer, id, rb->getGravity() * mass, centre - rb->getCenterOfMassPosition(), btScalar(0), pools);
+}
+
+bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun)
+{
+	const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, local)];
+	const int first = m_tipMembers.size();
+	const int mark = m_tipFirst.size() + 1;
+	bool kept = gatherTippingMembers(layer, id, mark, pools) && membersOutsideSupport(layer, id, first, pools);
+	if (kept)
+	{
+		gatherSupportRows(layer, pools);
+		const int slot = m_freeSlot[layer] + local;
+		const int numRows = m_supportEnd[slot] - m_supportBegin[slot];
+		// Each member's state before (restored if the solve is not kept or the layer is rejected),
+		// then the loads rejected layers gave back: they are the members' momentum too.
+		m_tipSaved.resize(m_tipMembers.size());
+		for (int j = first; j < m_tipMembers.size(); ++j)
+		{
+			btSolverBody& member = pools.m_bodies[m_tipMembers[j]];
+			m_tipSaved[j].m_deltaLinear = member.internalGetDeltaLinearVelocity();
+			m_tipSaved[j].m_deltaAngular = member.internalGetDeltaAngularVelocity();
+			member.internalGetDeltaLinearVelocity() += m_discardedLinear[m_tipMembers[j]];
+			member.internalGetDeltaAngularVelocity() += m_discardedAngular[m_tipMembers[j]];
+		}
+		// The body's support rows start again from where the layer pass found them: their
+		// re-solve did not carry the load alone (the guard's reason to be here), so its result is
+		// no starting point; the composite solves them.
+		btScalar resolved[btTippingCompositeMaxRows];
+		const bool fits = numRows > 0 && numRows <= btTippingCompositeMaxRows;
+		for (int r = 0; fits && r < numRows; ++r) resolved[r] = m_transferRows[m_supportBegin[slot] + r].m_row->m_appliedImpulse;
+		if (fits)
+		{
+			btSolverBody& base = pools.m_bodies[id];
+			const btLoadTransferRow* support = &m_transferRows[m_supportBegin[slot]];
+			int row = 0;
+			visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+				const btScalar before = m_impulseBefore[row++];
+				for (int r = 0; r < numRows; ++r)
+				{
+					if (support[r].m_row != &c) continue;
+					const btScalar change = btScalar(c.m_appliedImpulse) - before;
+					base.internalApplyImpulse((support[r].m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * base.internalGetInvMass(),
+											  support[r].m_sideA ? c.m_angularComponentA : c.m_angularComponentB, -change);
+					c.m_appliedImpulse = before;
+					break;
+				}
+			});
+		}
+		int run = 0;
+		kept = fits && btSolveTippingComposite(pools.m_bodies, &m_tipMembers[first], m_tipMembers.size() - first,
+													  &m_transferRows[m_supportBegin[slot]], numRows, pools.m_contacts, sweeps,
+													  weight.m_convergedSpeed, &run);
+		*sweepsRun += run;
+		// The guard's bound for a body that tips (D16), on every member: the composite leaves none
+		// faster than it began the step (last step's velocity and this step's gravity) by more
+		// than m_tipGain steps of free fall. A composite that would has taken in a load its
+		// support could not carry (hostile worlds: a 66 g base under a 43 kg body), as a lone
+		// body's re-solve that the guard rejects.
+		const btScalar gain = weight.m_tipGain * pools.m_bodies[id].m_originalBody->getGravity().length() * weight.m_timeStep;
+		for (int j = first; kept && j < m_tipMembers.size(); ++j)
+		{
+			btSolverBody& member = pools.m_bodies[m_tipMembers[j]];
+			const btVector3 base = member.m_linearVelocity + member.m_externalForceImpulse;
+			if (!((base + member.internalGetDeltaLinearVelocity()).length() <= base.length() + gain)) kept = false;
+		}
+		if (!kept)
+		{
+			for (int j = first; j < m_tipMembers.size(); ++j)
+			{
+				btSolverBody& member = pools.m_bodies[m_tipMembers[j]];
+				member.internalGetDeltaLinearVelocity() = m_tipSaved[j].m_deltaLinear;
+				member.internalGetDeltaAngularVelocity() = m_tipSaved[j].m_deltaAngular;
+			}
+			for (int r = 0; fits && r < numRows; ++r) m_transferRows[m_supportBegin[slot] + r].m_row->m_appliedImpulse = resolved[r];
+		}
+	}
+	if (!kept)
+	{
+		for (int j = first; j < m_tipMembers.size(); ++j) m_tipOf[m_tipMembers[j]] = 0;
+		m_tipMembers.resize(first);
+		m_tipSaved.resize(first);
+		return false;
+	}
+	m_tipFirst.push_back(first);
+	return true;
 }

@@ -39,6 +39,8 @@ struct btWeightPassParams
 	/// D23, m/s: a sliding base's composite holds in the weight pass while the load handed to it
 	/// across its support changes its velocity by at most this (else it is re-solved alone)
 	btScalar m_compositeTolerance = 0;
+	/// D25: a body statics says must tip carries what rests on it as one rigid body (btTippingComposite.h)
+	bool m_tippingComposites = false;
 };
 
 /// The up pass's schedule for each layer (D7, D19).
@@ -110,6 +112,13 @@ public:
 		m_sharedFactorTransfers = 0;
 		return n;
 	}
+	/// D25: tipping composites solved since the last call (and the count reset).
+	int takeTippingComposites()
+	{
+		const int n = m_tippingComposites;
+		m_tippingComposites = 0;
+		return n;
+	}
 
 	/// Layer k with its lower bodies fixated: the support blocks (D19, if asked), then sweeps.
 	/// withhold: record the reactions fixation keeps from the lower bodies, for solveWeightPass.
@@ -138,6 +147,11 @@ public:
 	/// D23, after setup and the warm start, before any pass: which friction rows slip by more
 	/// than `speed` (m/s) as the step begins (btRowSlipAtSetup).
 	void markSlipsAtSetup(const btSolverPools& pools, btScalar speed);
+	/// D25: the bodies resting on solver body `id` (free in `layer`), through contacts that push
+	/// now and point up into the upper body, that rest on nothing else, appended to m_tipMembers
+	/// (id first) as composite `mark` (m_tipOf). False (nothing kept) if fewer than two, or a
+	/// member is jointed, has factors, or belongs to another composite.
+	bool gatherTippingMembers(int layer, int id, int mark, const btSolverPools& pools);
 	/// D23, after the weight pass: each composite the weight pass held moves as one across its
 	/// support (btEqualizeAcross). Returns the number of composites this step.
 	int finishComposites(const btSolverPools& pools);
@@ -189,6 +203,16 @@ private:
 	/// D16 guard: whether the body's weight and the load withheld for it act outside the convex
 	/// hull of its support points (statics: it must tip).
 	bool loadOutsideSupport(int layer, int node, const btSolverPools& pools, btScalar timeStep, btScalar margin);
+	/// Whether the line through body `id`'s centre plus d0 along P meets the plane of its support
+	/// points in the layer outside their convex hull (by more than margin of its size).
+	bool lineOutsideSupport(int layer, int id, const btVector3& P, const btVector3& d0, btScalar margin, const btSolverPools& pools);
+	/// D25: whether the centre of mass of the tipping members from `first` (body `id` first) is
+	/// outside body id's support (statics of the sub-stack as one rigid body).
+	bool membersOutsideSupport(int layer, int id, int first, const btSolverPools& pools);
+	/// D25: free body `local` of the layer tips with the bodies resting on it alone, as one rigid
+	/// body (btTippingComposite.h), if statics says the composite tips and its solve adds no energy;
+	/// the members' prior velocities kept in m_tipSaved. False: nothing changed.
+	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun);
 	/// D20: whether every free body's load (in m_before) changes its velocity by at most `speed`
 	/// (m/s) at its farthest point, and would change no body it rests on by more (mass ratio).
 	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed);
@@ -232,6 +256,7 @@ private:
 		btVector3 m_deltaLinear;
 		btVector3 m_deltaAngular;
 		btVector3 m_loadLinear;    // the velocity change the delivered load alone gave the body
+		btVector3 m_loadAngular;
 	};
 	btAlignedObjectArray<btBodyDelta> m_before;           // weight pass: free bodies before their load
 	// Load transfer: per solver body its index among the layer's free bodies (-1 otherwise), and
@@ -265,6 +290,13 @@ private:
 	btAlignedObjectArray<char> m_blockFactorValid;
 	bool m_shareFactor = false;
 	int m_sharedFactorTransfers = 0;
+	// D25: this layer's tipping composites (members, base first), per solver body its composite + 1.
+	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipOf;
+	btAlignedObjectArray<btBodyDelta> m_tipSaved;  // per tipping member, its solver deltas before
+	// D25: per solver body, the load a rejected weight-pass layer gave back this step (velocity
+	// change, linear and angular); a tipping composite that takes the body in takes its momentum.
+	btAlignedObjectArray<btVector3> m_discardedLinear, m_discardedAngular;
+	int m_tippingComposites = 0;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 	// D23: this group's composites (every layer's), their members (base first), the layer's active
 	// ones and per solver body the active composite (-1: none); per friction row its slip at setup.

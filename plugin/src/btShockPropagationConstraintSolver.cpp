@@ -291,12 +291,14 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_convergedSpeed = convergedSpeed;
 		weight.m_transferSmallLoads = m_settings.m_diagnostics.m_transferSmallLoads;
 		weight.m_compositeTolerance = composites ? compositeSlip : btScalar(0);
+		weight.m_tippingComposites = m_settings.m_diagnostics.m_tippingComposites;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
 															   weight, &m_stats.m_numWeightRejections);
 		m_stats.m_numSlidingComposites += m_passes->finishComposites(pools);
 		m_stats.m_numSharedFactorTransfers += m_passes->takeSharedFactorTransfers();
+		m_stats.m_numTippingComposites += m_passes->takeTippingComposites();
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 

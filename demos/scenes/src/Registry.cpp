@@ -43,6 +43,7 @@ const std::vector<SceneEntry>& registry()
 		// truth: outcome predicted by statics or Coulomb friction in closed form (the truth suite, demos/truth)
 		{"truth", "harmonic_stack", "Cubes with the book-stacking overhang a / (2k) times scale: stands iff scale <= 1.", createHarmonicStack, harmonicStackParams()},
 		{"truth", "pushed_stack", "Five boxes stacked on the ground, box friction 1, ground friction 0.5: pushed at the bottom, slides iff F > mu W.", createPushedStack, pushedStackParams()},
+		{"truth", "ledge_column", "Six aligned cubes on a static ledge, their axis 0.2 of an edge past its edge: the column tips about the edge as one rigid body.", createLedgeColumn, ledgeColumnParams()},
 		{"truth", "ramp_stack", "Three boxes stacked on a 20 degree ramp: sticks iff mu >= tan(angle), else slides at g (sin a - mu cos a).", createRampStack, rampStackParams()},
 		{"truth", "loaded_lintel", "Lintel on two capped columns with a heavy box off centre: the caps share the load by the lever rule.", createLoadedLintel, loadedLintelParams()},
 

@@ -64,10 +64,12 @@ Params hingeBridgeParams();
 std::unique_ptr<SceneContent> createHarmonicStack(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createPushedStack(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createRampStack(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createLedgeColumn(btDiscreteDynamicsWorld& world, const Params& params);
 std::unique_ptr<SceneContent> createLoadedLintel(btDiscreteDynamicsWorld& world, const Params& params);
 Params harmonicStackParams();
 Params pushedStackParams();
 Params rampStackParams();
+Params ledgeColumnParams();
 Params loadedLintelParams();
 
 // BenchmarkScenes.cpp

@@ -181,6 +181,61 @@ std::unique_ptr<SceneContent> createRampStack(btDiscreteDynamicsWorld& world, co
 }
 
 // ---------------------------------------------------------------------------------------------------
+// ledge_column: n aligned cubes of edge a on a static ledge whose edge (x = 0) runs under the column,
+// the column's axis `overhang` a past it. Every sub-stack sits squarely on the cube below, so only
+// the whole column can move: for overhang > 0 its weight acts outside its support and it tips about
+// the ledge's edge as one rigid body. Rigid-body dynamics from rest: angular acceleration
+// alpha = M g e / I_edge, e = overhang a (the centre's lever arm), I_edge = M (a^2 + (n a)^2) / 12
+// + M (e^2 + (n a / 2)^2) (parallel axes about the edge), so alpha = g e / ((a^2 + n^2 a^2) / 12 +
+// e^2 + n^2 a^2 / 4).
+
+Params ledgeColumnParams()
+{
+	return {
+		{"n", 6, "-", "number of cubes"},
+		{"size", 0.5, "m", "cube edge"},
+		{"overhang", 0.2, "-", "x of the column's axis past the ledge's edge, as a fraction of the edge (tips iff > 0; must be < 0.5)"},
+		{"mass", 1, "kg", "mass of each cube"},
+		{"mu", 0.8, "-", build::kMuDescription},
+		{"ledgeHeight", 2, "m", "height of the ledge's top above the ground"},
+	};
+}
+
+std::unique_ptr<SceneContent> createLedgeColumn(btDiscreteDynamicsWorld& world, const Params& params)
+{
+	const int n = build::countParam(params, "n", 1);
+	const btScalar size = build::positiveParam(params, "size");
+	const btScalar overhang = build::nonNegativeParam(params, "overhang");
+	const btScalar mass = build::positiveParam(params, "mass");
+	const btScalar mu = build::nonNegativeParam(params, "mu");
+	const btScalar ledgeHeight = build::positiveParam(params, "ledgeHeight");
+	build::require(overhang < btScalar(0.5), "overhang must be < 0.5 so the column rests on the ledge");
+	const btScalar half = size / 2;
+	auto content = std::make_unique<SceneContent>(world);
+	build::addGround(*content, 4 * size * btScalar(n), mu);
+	// The ledge: a static box from x = -2 n a to its edge at x = 0, standing on the ground.
+	const btScalar ledgeHalfX = size * btScalar(n);
+	btCollisionShape* ledgeShape = content->addShape(new btBoxShape(btVector3(ledgeHalfX, ledgeHeight / 2, 2 * size)));
+	btRigidBody* ledge = content->addBody(ledgeShape, 0, build::at(-ledgeHalfX, ledgeHeight / 2, 0), mu);
+	content->name("ledge", ledge);
+	btCollisionShape* shape = content->addShape(new btBoxShape(btVector3(half, half, half)));
+	const btScalar x = overhang * size;
+	btRigidBody* cube = nullptr;
+	for (int level = 0; level < n; ++level)
+	{
+		cube = content->addBody(shape, mass, build::at(x, build::columnCentreY(ledgeHeight, half, level), 0), mu);
+		if (level == 0)
+			content->name("bottom", cube);
+	}
+	content->name("top", cube);
+	const double a = size, e = x, h = a * n;
+	content->facts["tipAcceleration"] = 9.81 * e / ((a * a + h * h) / 12 + e * e + h * h / 4);  // rad/s^2 at g = 9.81
+	content->facts["expectFalls"] = overhang > 0 ? 1 : 0;
+	build::finishScene(*content, !(overhang > 0));
+	return content;
+}
+
+// ---------------------------------------------------------------------------------------------------
 // loaded_lintel: a lintel on two columns of cubes with a heavy box off centre. Each column ends in a thin
 // cap (capWidth along x), so where on its top the lintel pushes moves the lever arms by at most
 // capWidth / span: on the columns' full 0.5 m faces the split would be statically indeterminate (any

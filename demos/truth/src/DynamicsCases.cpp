@@ -278,6 +278,57 @@ Verdict heavyColumnCase(const harness::SolverSpec& spec)
 			   format("max kinetic energy %.3g J (<= %.3g J = m_top g 10 um)", maxEnergy, energyBound);
 	return v;
 }
+
+// ---------------------------------------------------------------------------------------------------
+// 5. A column tipping over a ledge. truth/ledge_column: 6 aligned cubes of edge 0.5 m on a static
+// ledge, their axis 0.2 edge past its edge. Each sub-stack sits squarely on the cube below, so the
+// column can only tip about the ledge's edge as one rigid body, from rest with angular acceleration
+// alpha = M g e / I_edge (the scene's fact "tipAcceleration"). Pass: after kLedgeSeconds every
+// cube turns at alpha t within 10% (small angles: the lever arm grows by under 2% by then), and the
+// kinetic energy is at most the potential energy given up.
+
+constexpr double kLedgeSeconds = 0.2;
+constexpr double kLedgeTolerance = 0.10;
+
+Verdict ledgeColumnCase(const harness::SolverSpec& spec)
+{
+	harness::Trial trial(spec, "ledge_column");
+	const double alpha = trial.scene().facts.at("tipAcceleration");
+	const double g = trial.simulation().gravity();
+	auto potential = [&]() {
+		double e = 0;
+		for (const btRigidBody* b : trial.bodies()) e += g * b->getCenterOfMassPosition().y() / b->getInvMass();
+		return e;
+	};
+	const double potential0 = potential();
+	const int frames = int(kLedgeSeconds * kFrameRate + 0.5);
+	for (int k = 0; k < frames; ++k)
+		trial.step();
+	const double expected = alpha * frames / kFrameRate;  // rad/s
+	double slowest = INFINITY, fastest = -INFINITY, mean = 0, kinetic = 0;
+	for (const btRigidBody* b : trial.bodies())
+	{
+		const double w = -b->getAngularVelocity().z();  // tipping towards +x turns about -z
+		slowest = std::min(slowest, w);
+		fastest = std::max(fastest, w);
+		mean += w / double(trial.bodies().size());
+		kinetic += 0.5 * b->getLinearVelocity().length2() / b->getInvMass() +
+				   0.5 * b->getAngularVelocity().dot(b->getInvInertiaTensorWorld().inverse() * b->getAngularVelocity());
+	}
+	const double released = potential0 - potential();
+	const harness::TrialSummary summary = trial.summary();
+	Verdict v;
+	v.unit = "rad/s";
+	v.figure = mean;
+	v.expected = expected;
+	v.msPerStep = summary.msPerStep;
+	v.pass = !summary.nonFinite && slowest >= (1 - kLedgeTolerance) * expected && fastest <= (1 + kLedgeTolerance) * expected &&
+			 kinetic <= released * 1.001 + 1e-9;
+	v.detail = format("after %.1f s the cubes turn at %.4f-%.4f rad/s, rigid-body dynamics %.4f rad/s (+-%.0f%%); ", kLedgeSeconds, slowest,
+					  fastest, expected, kLedgeTolerance * 100) +
+			   format("kinetic energy %.4f J, potential energy released %.4f J", kinetic, released);
+	return v;
+}
 }  // namespace
 
 void addDynamicsCases(std::vector<TruthCase>& cases)
@@ -294,6 +345,10 @@ void addDynamicsCases(std::vector<TruthCase>& cases)
 					 "columns whose layers each lean 0.35 m further out (BenchmarkDemo's 3000 boxes) overhang their support and topple: mean box "
 					 "height after 5 s within 25% of a converged solver's (SI 4 sub-steps) and below a quarter of the start",
 					 columnsCase});
+	cases.push_back({"LedgeColumnTipsAsOneBody", "topple",
+					 "6 aligned cubes on a ledge, their axis 0.2 edge past its edge, tip about it as one rigid body: after 0.2 s every cube turns "
+					 "at alpha t within 10% (alpha = M g e / I_edge) and the kinetic energy is at most the potential energy released",
+					 ledgeColumnCase});
 	cases.push_back({"HeavyTopColumnStands", "dynamics",
 					 "an aligned column of 10 unit cubes under a 1000x heavier top cube stands: every cube within 1 cm for 5 s, none rises 1 cm, and "
 					 "the kinetic energy never exceeds m_top g times one 10 um rest overlap",

@@ -148,6 +148,13 @@ struct btShockPropagationDiagnostics
 	/// docs/design.md, section 4h).
 	bool m_slidingComposites = false;
 
+	/// D25: where the weight pass finds that statics makes a body tip (its weight and the loads
+	/// resting on it act outside its support points' hull) and its re-solve sped it up beyond its
+	/// push, the body and everything resting on it alone are merged into one rigid body (momentum
+	/// and angular momentum kept) and its support rows are solved for that body, instead of the
+	/// body turning alone under the whole weight above it (or the guard holding it up).
+	bool m_tippingComposites = true;
+
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
 	/// 9.81 m/s^2 and 60 Hz, ten times the convergence speed m_weightConvergence), and the largest
 	/// velocity change across the support that the load handed down to a composite's base may make
