@@ -471,7 +471,13 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		if (withComposites) shareCompositeMotion(k, pools);
 		bool anyRejected = false;
 		m_tipFirst.resize(0);
+		m_tipBase.resize(0);
 		m_tipMembers.resize(0);
+		// D26: a rejection restores the rejected body's island of the layer (the free bodies its
+		// rows in the layer connect it to) instead of every free body of the layer.
+		const bool perIsland = weight.m_rejectPerIsland && !withComposites;
+		m_rejectLocal.resize(numFree);
+		for (int i = 0; i < numFree; ++i) m_rejectLocal[i] = 0;
 		for (int i = 0; i < numFree; ++i)
 		{
 			const int node = m_layers->getFreeBody(k, i);
@@ -509,32 +515,46 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 				if (sink <= slack && loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin)) continue;
 			}
 			anyRejected = true;
-			break;
+			m_rejectLocal[i] = 1;
+			if (!perIsland) break;
 		}
+		if (anyRejected) rejectIslands(k, perIsland, pools);
 		// D25: the members of the layer's tipping composites keep the rigid motion if the layer
 		// stands (their rejected loads are now in it), else they get their velocities back (the
 		// layer's own free bodies, the bases, then their state from before the load).
-		for (int t = 0; t < m_tipMembers.size(); ++t)
+		for (int t = 0; t < m_tipFirst.size(); ++t)
 		{
-			const int member = m_tipMembers[t];
-			if (anyRejected)
+			const int end = t + 1 < m_tipFirst.size() ? m_tipFirst[t + 1] : m_tipMembers.size();
+			const bool undone = anyRejected && m_rejectLocal[m_tipBase[t]];
+			for (int j = m_tipFirst[t]; j < end; ++j)
 			{
-				pools.m_bodies[member].internalGetDeltaLinearVelocity() = m_tipSaved[t].m_deltaLinear;
-				pools.m_bodies[member].internalGetDeltaAngularVelocity() = m_tipSaved[t].m_deltaAngular;
-				continue;
+				const int member = m_tipMembers[j];
+				if (undone)
+				{
+					pools.m_bodies[member].internalGetDeltaLinearVelocity() = m_tipSaved[j].m_deltaLinear;
+					pools.m_bodies[member].internalGetDeltaAngularVelocity() = m_tipSaved[j].m_deltaAngular;
+					continue;
+				}
+				m_discardedLinear[member].setZero();
+				m_discardedAngular[member].setZero();
 			}
-			m_discardedLinear[member].setZero();
-			m_discardedAngular[member].setZero();
+			if (!undone) ++m_tippingComposites;
 		}
 		if (anyRejected)
 		{
-			// The layer keeps its state from before its load (every free body and row).
+			// The rejected islands keep their state from before their load (free bodies and rows).
+			indexFreeBodies(k, pools);
 			int row = 0;
-			visitLayerRows(k, pools, [&](btSolverConstraint& c, btSolverRowKind) { c.m_appliedImpulse = m_impulseBefore[row++]; });
+			visitLayerRows(k, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+				const btScalar before = m_impulseBefore[row++];
+				const int a = m_localOf[c.m_solverBodyIdA], b = m_localOf[c.m_solverBodyIdB];
+				if ((a >= 0 && m_rejectLocal[a]) || (b >= 0 && m_rejectLocal[b])) c.m_appliedImpulse = before;
+			});
+			unindexFreeBodies(k);
 			for (int i = 0; i < numFree; ++i)
 			{
 				const int id = m_solverBodyOfNode[m_layers->getFreeBody(k, i)];
-				if (id < 0) continue;
+				if (id < 0 || !m_rejectLocal[i]) continue;
 				pools.m_bodies[id].internalGetDeltaLinearVelocity() = m_before[i].m_deltaLinear;
 				pools.m_bodies[id].internalGetDeltaAngularVelocity() = m_before[i].m_deltaAngular;
 				if (weight.m_tippingComposites)
@@ -545,7 +565,6 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			}
 			if (rejected) ++*rejected;
 		}
-		if (!anyRejected) m_tippingComposites += m_tipFirst.size();
 		for (int t = 0; t < m_tipMembers.size(); ++t) m_tipOf[m_tipMembers[t]] = 0;
 		release(k, true, pools);  // a rejected layer's rows changed nothing: nothing is withheld
 		if (withComposites) deactivateComposites(!anyRejected, pools);
@@ -1219,7 +1238,8 @@ bool btLayeredPasses::membersOutsideSupport(int layer, int id, int first, const 
 	}
 	centre /= mass;
 	const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
-	return lineOutsideSupport(layer, id, rb->getGravity() * mass, centre - rb->getCenterOfMassPosition(), btScalar(0), pools);
+	const bool outside = lineOutsideSupport(layer, id, rb->getGravity() * mass, centre - rb->getCenterOfMassPosition(), btScalar(0), pools);
+	return outside;
 }
 
 bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun)
@@ -1304,5 +1324,29 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 		return false;
 	}
 	m_tipFirst.push_back(first);
+	m_tipBase.push_back(local);
 	return true;
+}
+
+void btLayeredPasses::rejectIslands(int layer, bool perIsland, const btSolverPools& pools)
+{
+	const int numFree = m_layers->getNumFreeBodies(layer);
+	if (!perIsland)
+	{
+		for (int i = 0; i < numFree; ++i) m_rejectLocal[i] = 1;
+		return;
+	}
+	// Spread the rejection over the layer's rows between two free bodies until it is closed.
+	indexFreeBodies(layer, pools);
+	for (bool changed = true; changed;)
+	{
+		changed = false;
+		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
+			const int a = m_localOf[c.m_solverBodyIdA], b = m_localOf[c.m_solverBodyIdB];
+			if (a < 0 || b < 0 || m_rejectLocal[a] == m_rejectLocal[b]) return;
+			m_rejectLocal[a] = m_rejectLocal[b] = 1;
+			changed = true;
+		});
+	}
+	unindexFreeBodies(layer);
 }

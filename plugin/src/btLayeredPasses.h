@@ -41,6 +41,8 @@ struct btWeightPassParams
 	btScalar m_compositeTolerance = 0;
 	/// D25: a body statics says must tip carries what rests on it as one rigid body (btTippingComposite.h)
 	bool m_tippingComposites = false;
+	/// D26: a rejected re-solve restores its island of the layer only (else the whole layer)
+	bool m_rejectPerIsland = false;
 };
 
 /// The up pass's schedule for each layer (D7, D19).
@@ -213,6 +215,9 @@ private:
 	/// body (btTippingComposite.h), if statics says the composite tips and its solve adds no energy;
 	/// the members' prior velocities kept in m_tipSaved. False: nothing changed.
 	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun);
+	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
+	/// the rejected bodies and every free body the layer's rows connect them to; else all of them.
+	void rejectIslands(int layer, bool perIsland, const btSolverPools& pools);
 	/// D20: whether every free body's load (in m_before) changes its velocity by at most `speed`
 	/// (m/s) at its farthest point, and would change no body it rests on by more (mass ratio).
 	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed);
@@ -291,7 +296,8 @@ private:
 	bool m_shareFactor = false;
 	int m_sharedFactorTransfers = 0;
 	// D25: this layer's tipping composites (members, base first), per solver body its composite + 1.
-	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipOf;
+	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipBase, m_tipOf;
+	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected
 	btAlignedObjectArray<btBodyDelta> m_tipSaved;  // per tipping member, its solver deltas before
 	// D25: per solver body, the load a rejected weight-pass layer gave back this step (velocity
 	// change, linear and angular); a tipping composite that takes the body in takes its momentum.

@@ -176,6 +176,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_transferSmallLoads), false, "resolvesmall"),
 		switchFlag("--full-global-pass", "plugin: the global pass always runs ceil(f N) sweeps, even once converged (D21 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_convergedGlobalPass), false, "fullglobal"),
+		switchFlag("--reject-whole-layer", "plugin: a rejected weight-pass re-solve restores every free body of its layer (D26 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_rejectPerIsland), false, "wholelayer"),
 		switchFlag("--no-tipping-composites", "plugin: a body statics says tips is judged alone by the weight-pass guard (D25 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_tippingComposites), false, "notipping"),
 		switchFlag("--composites", "plugin: a sliding base carries the inertia of what rests on it (D23, opt-in)",
