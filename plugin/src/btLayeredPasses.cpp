@@ -473,8 +473,8 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		m_tipFirst.resize(0);
 		m_tipBase.resize(0);
 		m_tipMembers.resize(0);
-		// D26: a rejection restores the rejected body's island of the layer (the free bodies its
-		// rows in the layer connect it to) instead of every free body of the layer.
+		// D26: a rejection restores the free bodies of the layer in the rejected body's island (its
+		// component of the contact graph) instead of every free body of the layer.
 		const bool perIsland = weight.m_rejectPerIsland && !withComposites;
 		m_rejectLocal.resize(numFree);
 		for (int i = 0; i < numFree; ++i) m_rejectLocal[i] = 0;
@@ -518,7 +518,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			m_rejectLocal[i] = 1;
 			if (!perIsland) break;
 		}
-		if (anyRejected) rejectIslands(k, perIsland, pools);
+		if (anyRejected) rejectIslands(k, perIsland);
 		// D25: the members of the layer's tipping composites keep the rigid motion if the layer
 		// stands (their rejected loads are now in it), else they get their velocities back (the
 		// layer's own free bodies, the bases, then their state from before the load).
@@ -1328,7 +1328,7 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 	return true;
 }
 
-void btLayeredPasses::rejectIslands(int layer, bool perIsland, const btSolverPools& pools)
+void btLayeredPasses::rejectIslands(int layer, bool perIsland)
 {
 	const int numFree = m_layers->getNumFreeBodies(layer);
 	if (!perIsland)
@@ -1336,17 +1336,15 @@ void btLayeredPasses::rejectIslands(int layer, bool perIsland, const btSolverPoo
 		for (int i = 0; i < numFree; ++i) m_rejectLocal[i] = 1;
 		return;
 	}
-	// Spread the rejection over the layer's rows between two free bodies until it is closed.
-	indexFreeBodies(layer, pools);
-	for (bool changed = true; changed;)
+	// Every free body of the layer in a rejected body's island (its connected component of the
+	// contact graph: Bullet's simulation island; islands Bullet batched into one solve are others).
+	m_rejectedComponents.resize(0);
+	for (int i = 0; i < numFree; ++i)
+		if (m_rejectLocal[i]) m_rejectedComponents.push_back(m_layers->getComponent(m_layers->getFreeBody(layer, i)));
+	for (int i = 0; i < numFree; ++i)
 	{
-		changed = false;
-		visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
-			const int a = m_localOf[c.m_solverBodyIdA], b = m_localOf[c.m_solverBodyIdB];
-			if (a < 0 || b < 0 || m_rejectLocal[a] == m_rejectLocal[b]) return;
-			m_rejectLocal[a] = m_rejectLocal[b] = 1;
-			changed = true;
-		});
+		const int component = m_layers->getComponent(m_layers->getFreeBody(layer, i));
+		for (int c = 0; c < m_rejectedComponents.size() && !m_rejectLocal[i]; ++c)
+			if (m_rejectedComponents[c] == component) m_rejectLocal[i] = 1;
 	}
-	unindexFreeBodies(layer);
 }

@@ -41,7 +41,7 @@ struct btWeightPassParams
 	btScalar m_compositeTolerance = 0;
 	/// D25: a body statics says must tip carries what rests on it as one rigid body (btTippingComposite.h)
 	bool m_tippingComposites = false;
-	/// D26: a rejected re-solve restores its island of the layer only (else the whole layer)
+	/// D26: a rejected re-solve restores the layer's bodies of its island only (else the whole layer)
 	bool m_rejectPerIsland = false;
 };
 
@@ -216,8 +216,8 @@ private:
 	/// the members' prior velocities kept in m_tipSaved. False: nothing changed.
 	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun);
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
-	/// the rejected bodies and every free body the layer's rows connect them to; else all of them.
-	void rejectIslands(int layer, bool perIsland, const btSolverPools& pools);
+	/// those in the rejected bodies' islands (components of the contact graph); else all of them.
+	void rejectIslands(int layer, bool perIsland);
 	/// D20: whether every free body's load (in m_before) changes its velocity by at most `speed`
 	/// (m/s) at its farthest point, and would change no body it rests on by more (mass ratio).
 	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed);
@@ -298,6 +298,7 @@ private:
 	// D25: this layer's tipping composites (members, base first), per solver body its composite + 1.
 	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipBase, m_tipOf;
 	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected
+	btAlignedObjectArray<int> m_rejectedComponents;
 	btAlignedObjectArray<btBodyDelta> m_tipSaved;  // per tipping member, its solver deltas before
 	// D25: per solver body, the load a rejected weight-pass layer gave back this step (velocity
 	// change, linear and angular); a tipping composite that takes the body in takes its momentum.

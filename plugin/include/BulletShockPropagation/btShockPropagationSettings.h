@@ -155,10 +155,10 @@ struct btShockPropagationDiagnostics
 	/// body turning alone under the whole weight above it (or the guard holding it up).
 	bool m_tippingComposites = true;
 
-	/// D26: a weight-pass re-solve the guard rejects restores only the rejected body's island of
-	/// its layer (the free bodies the layer's rows connect it to), not every free body of the layer.
-	/// Bullet solves small islands in one batch, so one layer can hold bodies of many independent
-	/// stacks: off, one stack's rejection held up every other stack of the batch.
+	/// D26: a weight-pass re-solve the guard rejects restores only the free bodies of its layer in
+	/// the rejected body's island (its connected component of the contact graph), not every free
+	/// body of the layer. Bullet solves small islands in one batch, so one layer can hold bodies of
+	/// many independent stacks: off, one stack's rejection held up every other stack of the batch.
 	bool m_rejectPerIsland = true;
 
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
