@@ -35,6 +35,19 @@ struct TruthCase
 /// Every case, in a fixed order.
 const std::vector<TruthCase>& truthCases();
 
+/// A column over a ledge tipping (scene truth/ledge_column), measured after `seconds` from rest:
+/// shared by the case LedgeColumnTipsAsOneBody and tests/behavior/TippingCompositeTest.cpp.
+struct LedgeTip
+{
+	double slowest = 0, fastest = 0, mean = 0;  ///< rad/s, the cubes' turning rates towards the drop
+	double expected = 0;                        ///< rad/s, alpha t of rigid-body dynamics
+	double kinetic = 0, released = 0;           ///< J: kinetic energy, potential energy given up
+	int tippingComposites = 0;                  ///< the plugin's D25 statistic, summed over the steps
+	bool nonFinite = false;
+	double msPerStep = 0;
+};
+LedgeTip measureLedgeTip(const harness::SolverSpec& solver, double seconds);
+
 /// Cases defined in src/StaticsCases.cpp and src/DynamicsCases.cpp.
 void addStaticsCases(std::vector<TruthCase>& cases);
 void addDynamicsCases(std::vector<TruthCase>& cases);
