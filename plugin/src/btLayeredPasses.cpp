@@ -408,7 +408,9 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	// down, and their bodies may sit in layers already final (a rejection could not undo them).
 	m_withJoints = false;
 	int total = 0;
-	if (weight.m_tippingComposites)
+	// D25: the loads rejected layers give back, per solver body (zero where none; only the bodies a
+	// rejection touched are cleared again below, so a settled step does no work here).
+	if (weight.m_tippingComposites && m_discardedLinear.size() != pools.m_bodies.size())
 	{
 		m_discardedLinear.resize(pools.m_bodies.size());
 		m_discardedAngular.resize(pools.m_bodies.size());
@@ -526,19 +528,17 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		{
 			const int end = t + 1 < m_tipFirst.size() ? m_tipFirst[t + 1] : m_tipMembers.size();
 			const bool undone = anyRejected && m_rejectLocal[m_tipBase[t]];
+			if (undone)
+			{
+				restoreTipMembers(m_tipFirst[t], end, pools);
+				continue;
+			}
 			for (int j = m_tipFirst[t]; j < end; ++j)
 			{
-				const int member = m_tipMembers[j];
-				if (undone)
-				{
-					pools.m_bodies[member].internalGetDeltaLinearVelocity() = m_tipSaved[j].m_deltaLinear;
-					pools.m_bodies[member].internalGetDeltaAngularVelocity() = m_tipSaved[j].m_deltaAngular;
-					continue;
-				}
-				m_discardedLinear[member].setZero();
-				m_discardedAngular[member].setZero();
+				m_discardedLinear[m_tipMembers[j]].setZero();
+				m_discardedAngular[m_tipMembers[j]].setZero();
 			}
-			if (!undone) ++m_tippingComposites;
+			++m_tippingComposites;
 		}
 		if (anyRejected)
 		{
@@ -561,6 +561,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 				{
 					m_discardedLinear[id] += m_before[i].m_loadLinear;
 					m_discardedAngular[id] += m_before[i].m_loadAngular;
+					m_discardedIds.push_back(id);
 				}
 			}
 			if (rejected) ++*rejected;
@@ -569,6 +570,12 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		release(k, true, pools);  // a rejected layer's rows changed nothing: nothing is withheld
 		if (withComposites) deactivateComposites(!anyRejected, pools);
 	}
+	for (int i = 0; i < m_discardedIds.size(); ++i)
+	{
+		m_discardedLinear[m_discardedIds[i]].setZero();
+		m_discardedAngular[m_discardedIds[i]].setZero();
+	}
+	m_discardedIds.resize(0);
 	m_withJoints = true;
 	return total;
 }
@@ -1238,8 +1245,7 @@ bool btLayeredPasses::membersOutsideSupport(int layer, int id, int first, const 
 	}
 	centre /= mass;
 	const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
-	const bool outside = lineOutsideSupport(layer, id, rb->getGravity() * mass, centre - rb->getCenterOfMassPosition(), btScalar(0), pools);
-	return outside;
+	return lineOutsideSupport(layer, id, rb->getGravity() * mass, centre - rb->getCenterOfMassPosition(), btScalar(0), pools);
 }
 
 bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun)
@@ -1307,12 +1313,7 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 		}
 		if (!kept)
 		{
-			for (int j = first; j < m_tipMembers.size(); ++j)
-			{
-				btSolverBody& member = pools.m_bodies[m_tipMembers[j]];
-				member.internalGetDeltaLinearVelocity() = m_tipSaved[j].m_deltaLinear;
-				member.internalGetDeltaAngularVelocity() = m_tipSaved[j].m_deltaAngular;
-			}
+			restoreTipMembers(first, m_tipMembers.size(), pools);
 			for (int r = 0; fits && r < numRows; ++r) m_transferRows[m_supportBegin[slot] + r].m_row->m_appliedImpulse = resolved[r];
 		}
 	}
@@ -1346,5 +1347,15 @@ void btLayeredPasses::rejectIslands(int layer, bool perIsland)
 		const int component = m_layers->getComponent(m_layers->getFreeBody(layer, i));
 		for (int c = 0; c < m_rejectedComponents.size() && !m_rejectLocal[i]; ++c)
 			if (m_rejectedComponents[c] == component) m_rejectLocal[i] = 1;
+	}
+}
+
+void btLayeredPasses::restoreTipMembers(int first, int end, const btSolverPools& pools)
+{
+	for (int j = first; j < end; ++j)
+	{
+		btSolverBody& member = pools.m_bodies[m_tipMembers[j]];
+		member.internalGetDeltaLinearVelocity() = m_tipSaved[j].m_deltaLinear;
+		member.internalGetDeltaAngularVelocity() = m_tipSaved[j].m_deltaAngular;
 	}
 }

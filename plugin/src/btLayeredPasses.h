@@ -218,6 +218,8 @@ private:
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
 	/// those in the rejected bodies' islands (components of the contact graph); else all of them.
 	void rejectIslands(int layer, bool perIsland);
+	/// D25: tipping members [first, end) get their solver deltas from before (m_tipSaved) back.
+	void restoreTipMembers(int first, int end, const btSolverPools& pools);
 	/// D20: whether every free body's load (in m_before) changes its velocity by at most `speed`
 	/// (m/s) at its farthest point, and would change no body it rests on by more (mass ratio).
 	bool loadsBelow(int layer, const btSolverPools& pools, btScalar speed);
@@ -303,6 +305,7 @@ private:
 	// D25: per solver body, the load a rejected weight-pass layer gave back this step (velocity
 	// change, linear and angular); a tipping composite that takes the body in takes its momentum.
 	btAlignedObjectArray<btVector3> m_discardedLinear, m_discardedAngular;
+	btAlignedObjectArray<int> m_discardedIds;  // the solver bodies given some this step (cleared at the pass's end)
 	int m_tippingComposites = 0;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
 	// D23: this group's composites (every layer's), their members (base first), the layer's active

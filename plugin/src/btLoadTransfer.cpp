@@ -70,9 +70,7 @@ btScalar applyTransfer(btSolverBody& body, const btLoadTransferRow* rows, int nu
 				after = btMax(btScalar(0), after);
 			else
 			{
-				const int contact = c.m_frictionIndex;
-				const btScalar normal = (contact >= 0 && contact < contacts.size()) ? btScalar(contacts[contact].m_appliedImpulse) : btScalar(0);
-				const btScalar bound = c.m_friction * btMax(btScalar(0), normal);
+				const btScalar bound = btFrictionBound(c, contacts);
 				after = btMax(-bound, btMin(bound, after));
 			}
 			if (!(after == after)) continue;  // NaN: the row is left to the sweeps

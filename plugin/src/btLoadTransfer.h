@@ -58,6 +58,28 @@ inline btRowSides btSidesOf(const btLoadTransferRow& r)
 					 : btRowSides{c.m_contactNormal2, c.m_relpos2CrossNormal, c.m_contactNormal1, c.m_relpos1CrossNormal};
 }
 
+/// What one more call of Bullet's row kernel would change the row's velocity by, before clamping
+/// (m/s): its target (rhs, cfm) less the velocity its ends give it now, `self` being the body the
+/// row acts on here and `other` its other end as the row sees it (fixation folds a fixated end's
+/// hidden motion into the rhs).
+inline btScalar btSupportRowError(const btLoadTransferRow& r, btSolverBody& self, btSolverBody& other)
+{
+	const btSolverConstraint& c = *r.m_row;
+	const btRowSides s = btSidesOf(r);
+	return (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - s.m_otherLinear.dot(other.internalGetDeltaLinearVelocity()) -
+		   s.m_otherAngular.dot(other.internalGetDeltaAngularVelocity()) - s.m_linear.dot(self.internalGetDeltaLinearVelocity()) -
+		   s.m_angular.dot(self.internalGetDeltaAngularVelocity());
+}
+
+/// A friction row's Coulomb bound: its coefficient times its contact row's normal impulse (none
+/// pushing, or no contact row: 0).
+inline btScalar btFrictionBound(const btSolverConstraint& friction, const btConstraintArray& contacts)
+{
+	const int contact = friction.m_frictionIndex;
+	const btScalar normal = (contact >= 0 && contact < contacts.size()) ? btScalar(contacts[contact].m_appliedImpulse) : btScalar(0);
+	return friction.m_friction * btMax(btScalar(0), normal);
+}
+
 /// The momentum (linear, angular) M u of a velocity change u = (linear, angular) of a body with
 /// inverse mass invMass and world inverse inertia invInertia.
 inline void btMomentumOf(btScalar invMass, const btMatrix3x3& invInertia, const btVector3& linear, const btVector3& angular, btScalar out[6])

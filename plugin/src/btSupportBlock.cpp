@@ -59,12 +59,9 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		if (!point || !(point->m_appliedImpulse > btScalar(0))) return false;
 		const btRowSides s = btSidesOf(rows[i]);
 		const btSolverBody& other = bodies[rows[i].m_sideA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
-		btSolverBody& self = body;  // Bullet's delta accessors are not const
-		btSolverBody& fixed = const_cast<btSolverBody&>(other);
-		// What Bullet's kernel would turn into an impulse, in velocity units.
-		const btScalar e = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv -
-						   s.m_otherLinear.dot(fixed.internalGetDeltaLinearVelocity()) - s.m_otherAngular.dot(fixed.internalGetDeltaAngularVelocity()) -
-						   s.m_linear.dot(self.internalGetDeltaLinearVelocity()) - s.m_angular.dot(self.internalGetDeltaAngularVelocity());
+		// What Bullet's kernel would turn into an impulse, in velocity units (Bullet's delta
+		// accessors are not const).
+		const btScalar e = btSupportRowError(rows[i], body, const_cast<btSolverBody&>(other));
 		if (!(e == e)) continue;
 		const btScalar j[6] = {s.m_linear[0], s.m_linear[1], s.m_linear[2], s.m_angular[0], s.m_angular[1], s.m_angular[2]};
 		for (int a = 0; a < 6; ++a)
@@ -108,7 +105,7 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 				after = btMax(btScalar(0), after);
 			else
 			{
-				const btScalar bound = c.m_friction * btMax(btScalar(0), btScalar(contacts[c.m_frictionIndex].m_appliedImpulse));
+				const btScalar bound = btFrictionBound(c, contacts);
 				after = btMax(-bound, btMin(bound, after));
 			}
 			if (after == after) c.m_appliedImpulse = after;

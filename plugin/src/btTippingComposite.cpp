@@ -18,8 +18,6 @@ subject to the following restrictions:
 
 namespace
 {
-const int kMaxCompositeRows = btTippingCompositeMaxRows;
-
 btVector3 velocityOf(btSolverBody& b) { return b.m_linearVelocity + b.m_externalForceImpulse + b.internalGetDeltaLinearVelocity(); }
 btVector3 spinOf(btSolverBody& b) { return b.m_angularVelocity + b.m_externalTorqueImpulse + b.internalGetDeltaAngularVelocity(); }
 
@@ -36,7 +34,7 @@ bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const i
 							 int numRows, const btConstraintArray& contacts, int maxSweeps, btScalar convergedSpeed, int* sweepsRun)
 {
 	if (sweepsRun) *sweepsRun = 0;
-	if (numMembers < 2 || numRows < 1 || numRows > kMaxCompositeRows) return false;
+	if (numMembers < 2 || numRows < 1 || numRows > btTippingCompositeMaxRows) return false;
 	// Mass and centre.
 	btScalar mass = 0;
 	btVector3 centre(0, 0, 0);
@@ -78,8 +76,8 @@ bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const i
 	// The base's rows about the composite's centre.
 	btSolverBody& base = bodies[members[0]];
 	const btVector3 arm = base.m_originalBody->getCenterOfMassPosition() - centre;
-	btVector3 angular[kMaxCompositeRows], response[kMaxCompositeRows];
-	btScalar inverseMass[kMaxCompositeRows];
+	btVector3 angular[btTippingCompositeMaxRows], response[btTippingCompositeMaxRows];
+	btScalar inverseMass[btTippingCompositeMaxRows];
 	for (int i = 0; i < numRows; ++i)
 	{
 		const btRowSides s = btSidesOf(rows[i]);
@@ -89,7 +87,7 @@ bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const i
 	}
 
 	const btScalar energyMerged = mass * V.length2() + Omega.dot(inertia * Omega);  // twice the kinetic energy
-	btScalar before[kMaxCompositeRows];
+	btScalar before[btTippingCompositeMaxRows];
 	for (int i = 0; i < numRows; ++i) before[i] = rows[i].m_row->m_appliedImpulse;
 	const btVector3 baseLinear = base.internalGetDeltaLinearVelocity(), baseAngular = base.internalGetDeltaAngularVelocity();
 	moveWith(base, centre, V, Omega);
@@ -104,13 +102,9 @@ bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const i
 				if (rows[i].m_contact != (pass == 0)) continue;
 				btSolverConstraint& c = *rows[i].m_row;
 				if (c.m_jacDiagABInv == btScalar(0) || !(inverseMass[i] > SIMD_EPSILON)) continue;
-				const btRowSides s = btSidesOf(rows[i]);
 				btSolverBody& other = bodies[rows[i].m_sideA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
 				// The row's velocity error as Bullet's kernel sees it (the fixated end as fixation shows it).
-				const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv -
-									   s.m_otherLinear.dot(other.internalGetDeltaLinearVelocity()) -
-									   s.m_otherAngular.dot(other.internalGetDeltaAngularVelocity()) -
-									   s.m_linear.dot(base.internalGetDeltaLinearVelocity()) - s.m_angular.dot(base.internalGetDeltaAngularVelocity());
+				const btScalar error = btSupportRowError(rows[i], base, other);
 				const btScalar old = c.m_appliedImpulse;
 				btScalar after = old + error / inverseMass[i];
 				if (rows[i].m_contact)
@@ -118,14 +112,14 @@ bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const i
 				else
 				{
 					if (c.m_frictionIndex < 0 || c.m_frictionIndex >= contacts.size()) continue;
-					const btScalar bound = c.m_friction * btMax(btScalar(0), btScalar(contacts[c.m_frictionIndex].m_appliedImpulse));
+					const btScalar bound = btFrictionBound(c, contacts);
 					after = btMax(-bound, btMin(bound, after));
 				}
 				if (!(after == after)) continue;
 				const btScalar change = after - old;
 				if (change == btScalar(0)) continue;
 				c.m_appliedImpulse = after;
-				V += s.m_linear * (change / mass);
+				V += btSidesOf(rows[i]).m_linear * (change / mass);
 				Omega += response[i] * change;
 				moveWith(base, centre, V, Omega);
 				const btScalar velocityChange = change * inverseMass[i];
