@@ -24,6 +24,9 @@ subject to the following restrictions:
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "BulletShockPropagation/btStackLayers.h"
 
+#include <algorithm>
+#include <functional>
+
 namespace
 {
 /// Counting sort of rows by layer into CSR arrays (start offsets of size K + 1, then rows).
@@ -107,6 +110,7 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	m_supportGathered.resize(m_numLayers);
 	for (int k = 0; k < m_numLayers; ++k) m_supportGathered[k] = 0;
 	m_transferRows.resize(0);
+	m_rowsOfBodyBuilt = false;
 	m_composites.resize(0);
 	m_compositeMembers.resize(0);
 	m_active.resize(0);
@@ -1175,26 +1179,47 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 	};
 	m_tipMembers.push_back(id);
 	m_tipOf[id] = mark;
-	bool clash = false;
-	for (int k = layer + 1; k < m_numLayers && !clash; ++k)
-		for (int r = m_contactStart[k]; r < m_contactStart[k + 1]; ++r)
-		{
-			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
-			const int a = row.m_solverBodyIdA, b = row.m_solverBodyIdB;
-			const bool inA = m_tipOf[a] == mark, inB = m_tipOf[b] == mark;
-			if (inA == inB) continue;
-			const int lower = inA ? a : b, upper = inA ? b : a;
-			const int upperNode = m_nodeOfSolverBody[upper], lowerNode = m_nodeOfSolverBody[lower];
-			if (upperNode < 0 || lowerNode < 0 || m_layers->getHeight(upperNode) <= m_layers->getHeight(lowerNode)) continue;
-			if (!restsOn(row, upper) || !eligible(upper)) continue;
-			if (m_tipOf[upper] != 0)
+	// The rows above the layer in order (by layer, then Bullet's order), each looked at once, and
+	// only if it touches a member: a member's rows are queued from the position where it joined.
+	if (!m_rowsOfBodyBuilt) buildRowsOfBody(pools);
+	const int aboveBegin = m_contactStart[btMin(layer + 1, m_numLayers)];
+	btAlignedObjectArray<int>& queue = m_tipQueue;
+	queue.resize(0);
+	const auto enqueueRows = [&](int body, int from) {
+		for (int p = m_rowsOfBodyStart[body]; p < m_rowsOfBodyStart[body + 1]; ++p)
+			if (m_rowsOfBody[p] >= from)
 			{
-				clash = true;  // it rests on another tipping body too
-				break;
+				queue.push_back(m_rowsOfBody[p]);
+				std::push_heap(&queue[0], &queue[0] + queue.size(), std::greater<int>());
 			}
-			m_tipOf[upper] = mark;
-			m_tipMembers.push_back(upper);
+	};
+	enqueueRows(id, aboveBegin);
+	bool clash = false;
+	int previous = -1;
+	while (queue.size() && !clash)
+	{
+		std::pop_heap(&queue[0], &queue[0] + queue.size(), std::greater<int>());
+		const int r = queue[queue.size() - 1];
+		queue.pop_back();
+		if (r == previous) continue;  // queued by both its bodies
+		previous = r;
+		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+		const int a = row.m_solverBodyIdA, b = row.m_solverBodyIdB;
+		const bool inA = m_tipOf[a] == mark, inB = m_tipOf[b] == mark;
+		if (inA == inB) continue;
+		const int lower = inA ? a : b, upper = inA ? b : a;
+		const int upperNode = m_nodeOfSolverBody[upper], lowerNode = m_nodeOfSolverBody[lower];
+		if (upperNode < 0 || lowerNode < 0 || m_layers->getHeight(upperNode) <= m_layers->getHeight(lowerNode)) continue;
+		if (!restsOn(row, upper) || !eligible(upper)) continue;
+		if (m_tipOf[upper] != 0)
+		{
+			clash = true;  // it rests on another tipping body too
+			break;
 		}
+		m_tipOf[upper] = mark;
+		m_tipMembers.push_back(upper);
+		enqueueRows(upper, r + 1);
+	}
 	// Only what rests on the composite alone: a body also resting on something outside it (and,
 	// in turn, what rests on that body) is left out. Members are in order of height.
 	for (int j = first + 1; j < m_tipMembers.size() && !clash; ++j)
@@ -1203,10 +1228,12 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 		const int height = m_layers->getHeight(m_nodeOfSolverBody[member]);
 		const int k = height - 1;
 		if (k < 0 || k >= m_numLayers) continue;
-		for (int r = m_contactStart[k]; r < m_contactStart[k + 1]; ++r)
+		for (int p = m_rowsOfBodyStart[member]; p < m_rowsOfBodyStart[member + 1]; ++p)
 		{
+			const int r = m_rowsOfBody[p];
+			if (r < m_contactStart[k]) continue;
+			if (r >= m_contactStart[k + 1]) break;
 			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
-			if (row.m_solverBodyIdA != member && row.m_solverBodyIdB != member) continue;
 			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
 			if (m_tipOf[other] == mark || !restsOn(row, member)) continue;
 			m_tipOf[member] = -mark;  // left out (kept marked until the layer ends, then cleared)
@@ -1230,6 +1257,32 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 		return false;
 	}
 	return true;
+}
+
+void btLayeredPasses::buildRowsOfBody(const btSolverPools& pools)
+{
+	const int numBodies = pools.m_bodies.size();
+	const int numPositions = m_contactStart[m_numLayers];
+	m_rowsOfBodyStart.resize(numBodies + 1);
+	for (int i = 0; i <= numBodies; ++i) m_rowsOfBodyStart[i] = 0;
+	for (int r = 0; r < numPositions; ++r)
+	{
+		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+		++m_rowsOfBodyStart[row.m_solverBodyIdA + 1];
+		if (row.m_solverBodyIdB != row.m_solverBodyIdA) ++m_rowsOfBodyStart[row.m_solverBodyIdB + 1];
+	}
+	for (int i = 0; i < numBodies; ++i) m_rowsOfBodyStart[i + 1] += m_rowsOfBodyStart[i];
+	m_rowsOfBody.resize(m_rowsOfBodyStart[numBodies]);
+	btAlignedObjectArray<int>& cursor = m_scratchCursor;
+	cursor.resize(numBodies);
+	for (int i = 0; i < numBodies; ++i) cursor[i] = m_rowsOfBodyStart[i];
+	for (int r = 0; r < numPositions; ++r)  // ascending, so each body's positions are too
+	{
+		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+		m_rowsOfBody[cursor[row.m_solverBodyIdA]++] = r;
+		if (row.m_solverBodyIdB != row.m_solverBodyIdA) m_rowsOfBody[cursor[row.m_solverBodyIdB]++] = r;
+	}
+	m_rowsOfBodyBuilt = true;
 }
 
 bool btLayeredPasses::membersOutsideSupport(int layer, int id, int first, const btSolverPools& pools)

@@ -299,6 +299,11 @@ private:
 	int m_sharedFactorTransfers = 0;
 	// D25: this layer's tipping composites (members, base first), per solver body its composite + 1.
 	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipBase, m_tipOf;
+	// D25: per solver body its contact rows, as positions in m_contactRows in ascending order (CSR,
+	// built on the first gathering of a step), and the gathering's queue of positions (a min-heap).
+	void buildRowsOfBody(const btSolverPools& pools);
+	btAlignedObjectArray<int> m_rowsOfBodyStart, m_rowsOfBody, m_tipQueue;
+	bool m_rowsOfBodyBuilt = false;
 	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected
 	btAlignedObjectArray<int> m_rejectedComponents;
 	btAlignedObjectArray<btBodyDelta> m_tipSaved;  // per tipping member, its solver deltas before
