@@ -172,6 +172,21 @@ void btLayeredPasses::visitLayerRows(int layer, const btSolverPools& pools, Visi
 		visit(pools.m_rollingFrictions[m_rollingRows[i]], BT_ROW_ROLLING_FRICTION);
 }
 
+template <class Visit>
+void btLayeredPasses::visitBodyRows(int id, int layer, const btSolverPools& pools, Visit visit)
+{
+	if (layer < 0 || layer >= m_numLayers) return;
+	if (!m_rowsOfBodyBuilt) buildRowsOfBody(pools);
+	const int begin = m_contactStart[layer], end = m_contactStart[layer + 1];
+	for (int p = m_rowsOfBodyStart[id]; p < m_rowsOfBodyStart[id + 1]; ++p)
+	{
+		const int r = m_rowsOfBody[p];
+		if (r < begin) continue;
+		if (r >= end) break;
+		visit(static_cast<const btSolverConstraint&>(pools.m_contacts[m_contactRows[r]]));
+	}
+}
+
 void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, const btSolverPools& pools)
 {
 	// Lower bodies of the layer (height <= layer): infinite mass while the layer is swept.
@@ -721,7 +736,7 @@ void btLayeredPasses::gatherSupportRows(int layer, const btSolverPools& pools)
 			bool sideA;
 			btSolverConstraint& c = pool[sorted[i]];
 			const int local = freeEnd(c, sideA);
-			if (local >= 0) m_transferRows[m_transferCursor[local]++] = btLoadTransferRow{&c, sideA, contact};
+			if (local >= 0) m_transferRows[m_transferCursor[local]++] = btLoadTransferRow{&c, sideA, contact, i - start[layer]};
 		}
 	};
 	fillRows(pools.m_contacts, m_contactStart, m_contactRows, true);
@@ -777,22 +792,19 @@ bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPool
 	// The whole load of the contacts resting on it (the layer above), normal parts only: the
 	// friction PGS leaves between a body and its supports is not determined by statics (a
 	// squeeze), and would tip what carries it.
-	if (layer + 1 < m_numLayers)
-		for (int r = m_contactStart[layer + 1]; r < m_contactStart[layer + 2]; ++r)
+	visitBodyRows(id, layer + 1, pools, [&](const btSolverConstraint& row) {
+		const btScalar lambda = row.m_appliedImpulse;
+		if (row.m_solverBodyIdA == id)
 		{
-			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
-			const btScalar lambda = row.m_appliedImpulse;
-			if (row.m_solverBodyIdA == id)
-			{
-				P += row.m_contactNormal1 * lambda;
-				A += row.m_relpos1CrossNormal * lambda;
-			}
-			else if (row.m_solverBodyIdB == id)
-			{
-				P += row.m_contactNormal2 * lambda;
-				A += row.m_relpos2CrossNormal * lambda;
-			}
+			P += row.m_contactNormal1 * lambda;
+			A += row.m_relpos1CrossNormal * lambda;
 		}
+		else
+		{
+			P += row.m_contactNormal2 * lambda;
+			A += row.m_relpos2CrossNormal * lambda;
+		}
+	});
 	const btScalar down = -P.dot(up);
 	if (!(down > SIMD_EPSILON)) return false;  // nothing pressing down: no statics to judge
 	return lineOutsideSupport(layer, id, P, P.cross(A) / P.length2(), margin, pools);
@@ -808,18 +820,15 @@ bool btLayeredPasses::lineOutsideSupport(int layer, int id, const btVector3& P, 
 	btPlaneSpace1(up, u, v);
 	m_hull.resize(0);
 	btScalar plane = SIMD_INFINITY;
-	for (int r = m_contactStart[layer]; r < m_contactStart[layer + 1]; ++r)
-	{
-		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
-		if (row.m_solverBodyIdA != id && row.m_solverBodyIdB != id) continue;
+	visitBodyRows(id, layer, pools, [&](const btSolverConstraint& row) {
 		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
-		if (!cp) continue;
+		if (!cp) return;
 		const btVector3 n = row.m_solverBodyIdA == id ? row.m_contactNormal1 : row.m_contactNormal2;
-		if (n.dot(up) < btScalar(0.5)) continue;  // side contacts do not carry weight
+		if (n.dot(up) < btScalar(0.5)) return;  // side contacts do not carry weight
 		const btVector3 x = cp->getPositionWorldOnB() - c;
 		plane = btMin(plane, x.dot(up));
 		m_hull.push_back(btVector3(x.dot(u), x.dot(v), 0));
-	}
+	});
 	if (m_hull.size() == 0) return false;
 	// The line of action: d x P = A, d = d0 + t P; at the support plane d . up = plane.
 	const btScalar t = (plane - d0.dot(up)) / P.dot(up);
@@ -858,17 +867,12 @@ bool btLayeredPasses::lineOutsideSupport(int layer, int id, const btVector3& P, 
 	return false;
 }
 
-btVector3 btLayeredPasses::supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools) const
+btVector3 btLayeredPasses::supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools)
 {
 	// The mean normal of the body's supports in this layer (pointing into the body); without any,
 	// against gravity.
 	btVector3 n(0, 0, 0);
-	for (int r = m_contactStart[layer]; r < m_contactStart[layer + 1]; ++r)
-	{
-		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
-		if (row.m_solverBodyIdA == id) n += row.m_contactNormal1;
-		else if (row.m_solverBodyIdB == id) n += row.m_contactNormal2;
-	}
+	visitBodyRows(id, layer, pools, [&](const btSolverConstraint& row) { n += row.m_solverBodyIdA == id ? row.m_contactNormal1 : row.m_contactNormal2; });
 	if (!(n.length2() > SIMD_EPSILON)) n = -gravity;
 	if (!(n.length2() > SIMD_EPSILON)) return btVector3(0, 0, 0);
 	return n.normalized();
@@ -1331,21 +1335,20 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 		for (int r = 0; fits && r < numRows; ++r) resolved[r] = m_transferRows[m_supportBegin[slot] + r].m_row->m_appliedImpulse;
 		if (fits)
 		{
+			// m_impulseBefore is in visitLayerRows' order: joints (layer 0), contacts, frictions.
 			btSolverBody& base = pools.m_bodies[id];
 			const btLoadTransferRow* support = &m_transferRows[m_supportBegin[slot]];
-			int row = 0;
-			visitLayerRows(layer, pools, [&](btSolverConstraint& c, btSolverRowKind) {
-				const btScalar before = m_impulseBefore[row++];
-				for (int r = 0; r < numRows; ++r)
-				{
-					if (support[r].m_row != &c) continue;
-					const btScalar change = btScalar(c.m_appliedImpulse) - before;
-					base.internalApplyImpulse((support[r].m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * base.internalGetInvMass(),
-											  support[r].m_sideA ? c.m_angularComponentA : c.m_angularComponentB, -change);
-					c.m_appliedImpulse = before;
-					break;
-				}
-			});
+			const int contactsFrom = hasJoints(layer, pools) ? pools.m_joints.size() : 0;
+			const int frictionsFrom = contactsFrom + m_contactStart[layer + 1] - m_contactStart[layer];
+			for (int r = 0; r < numRows; ++r)
+			{
+				btSolverConstraint& c = *support[r].m_row;
+				const btScalar before = m_impulseBefore[(support[r].m_contact ? contactsFrom : frictionsFrom) + support[r].m_position];
+				const btScalar change = btScalar(c.m_appliedImpulse) - before;
+				base.internalApplyImpulse((support[r].m_sideA ? c.m_contactNormal1 : c.m_contactNormal2) * base.internalGetInvMass(),
+										  support[r].m_sideA ? c.m_angularComponentA : c.m_angularComponentB, -change);
+				c.m_appliedImpulse = before;
+			}
 		}
 		int run = 0;
 		kept = fits && btSolveTippingComposite(pools.m_bodies, &m_tipMembers[first], m_tipMembers.size() - first,

@@ -228,7 +228,7 @@ private:
 	void transferOnly(int layer, const btSolverPools& pools);
 	/// The mean normal of the body's (solver body id) supports in the layer, unit, pointing into
 	/// the body; against gravity where it has none (D16 guard).
-	btVector3 supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools) const;
+	btVector3 supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools);
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
 	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
@@ -302,6 +302,10 @@ private:
 	// D25: per solver body its contact rows, as positions in m_contactRows in ascending order (CSR,
 	// built on the first gathering of a step), and the gathering's queue of positions (a min-heap).
 	void buildRowsOfBody(const btSolverPools& pools);
+	/// Calls visit(row) for each contact row of `layer` with solver body `id` at one end, in the
+	/// layer's order.
+	template <class Visit>
+	void visitBodyRows(int id, int layer, const btSolverPools& pools, Visit visit);
 	btAlignedObjectArray<int> m_rowsOfBodyStart, m_rowsOfBody, m_tipQueue;
 	bool m_rowsOfBodyBuilt = false;
 	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected

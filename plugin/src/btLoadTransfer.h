@@ -40,6 +40,7 @@ struct btLoadTransferRow
 	btSolverConstraint* m_row;
 	bool m_sideA;  ///< the body is side A of the row
 	bool m_contact;  ///< contact normal (else friction, bounded by its contact row)
+	int m_position = -1;  ///< btLayeredPasses: the row's place among its layer's contact (or friction) rows
 };
 
 /// A row's Jacobian on the body it transfers to (J_b) and on its other end (J_o).
