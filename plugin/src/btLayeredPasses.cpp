@@ -515,8 +515,10 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			// rigid body (tipWithMembers: kept only if the composite's statics says so too, its
 			// solve adds no energy and no member speeds up beyond m_tipGain steps of free fall;
 			// else the clauses below judge the body alone).
+			// D27: a load beyond m_tipGain steps of free fall is an impact (something landed).
+			const bool impact = weight.m_impactTipping && m_before[i].m_loadLinear.length() > weight.m_tipGain * fall;
 			if (weight.m_tippingComposites && fall > btScalar(0) && !withComposites &&
-				loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin) && tipWithMembers(k, i, sweeps, weight, pools, &total))
+				loadOutsideSupport(k, node, pools, weight.m_timeStep, weight.m_tipMargin) && tipWithMembers(k, i, sweeps, weight, pools, &total, impact))
 				continue;
 			if (converged && after <= before + weight.m_tipGain * fall && fall > btScalar(0))
 			{
@@ -1305,12 +1307,15 @@ bool btLayeredPasses::membersOutsideSupport(int layer, int id, int first, const 
 	return lineOutsideSupport(layer, id, rb->getGravity() * mass, centre - rb->getCenterOfMassPosition(), btScalar(0), pools);
 }
 
-bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun)
+bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun,
+									 bool impact)
 {
 	const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, local)];
 	const int first = m_tipMembers.size();
 	const int mark = m_tipFirst.size() + 1;
-	bool kept = gatherTippingMembers(layer, id, mark, pools) && membersOutsideSupport(layer, id, first, pools);
+	// D27: an impact's momentum, not the composite's weight, decides whether it turns (the guard
+	// found the load outside the support already).
+	bool kept = gatherTippingMembers(layer, id, mark, pools) && (impact || membersOutsideSupport(layer, id, first, pools));
 	if (kept)
 	{
 		gatherSupportRows(layer, pools);

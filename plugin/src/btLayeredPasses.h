@@ -43,6 +43,9 @@ struct btWeightPassParams
 	bool m_tippingComposites = false;
 	/// D26: a rejected re-solve restores the layer's bodies of its island only (else the whole layer)
 	bool m_rejectPerIsland = false;
+	/// D27: an impact load (beyond m_tipGain |g| dt) tips a composite where it acts outside the
+	/// support, whatever the composite's weight does
+	bool m_impactTipping = false;
 };
 
 /// The up pass's schedule for each layer (D7, D19).
@@ -212,9 +215,10 @@ private:
 	/// outside body id's support (statics of the sub-stack as one rigid body).
 	bool membersOutsideSupport(int layer, int id, int first, const btSolverPools& pools);
 	/// D25: free body `local` of the layer tips with the bodies resting on it alone, as one rigid
-	/// body (btTippingComposite.h), if statics says the composite tips and its solve adds no energy;
-	/// the members' prior velocities kept in m_tipSaved. False: nothing changed.
-	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun);
+	/// body (btTippingComposite.h), if statics says the composite tips (D27: for an `impact` load,
+	/// the caller's test that the load acts outside the support suffices) and its solve adds no
+	/// energy; the members' prior velocities kept in m_tipSaved. False: nothing changed.
+	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun, bool impact);
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
 	/// those in the rejected bodies' islands (components of the contact graph); else all of them.
 	void rejectIslands(int layer, bool perIsland);

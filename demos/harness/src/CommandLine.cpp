@@ -180,6 +180,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_rejectPerIsland), false, "wholelayer"),
 		switchFlag("--no-tipping-composites", "plugin: a body statics says tips is judged alone by the weight-pass guard (D25 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_tippingComposites), false, "notipping"),
+		switchFlag("--no-impact-tipping", "plugin: an impact tips a composite only where its weight would too (D27 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_impactTipping), false, "noimpact"),
 		switchFlag("--composites", "plugin: a sliding base carries the inertia of what rests on it (D23, opt-in)",
 				   diagnostic(&btShockPropagationDiagnostics::m_slidingComposites), true, "composites"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",

@@ -161,6 +161,14 @@ struct btShockPropagationDiagnostics
 	/// many independent stacks: off, one stack's rejection held up every other stack of the batch.
 	bool m_rejectPerIsland = true;
 
+	/// D27: where the load handed to a body is an impact (it changes the body's velocity by more
+	/// than m_weightGuardTipping |g| dt: something landed on what rests on it), D25's composite
+	/// forms wherever that load acts outside the body's support, without D25's test that the
+	/// composite's own weight does: a box landing on an overhanging staircase turns the part above
+	/// the hinge it cannot be carried past, as its momentum says, though the part's weight alone
+	/// would be carried. Off, the landing is stopped as if the staircase could not turn.
+	bool m_impactTipping = true;
+
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
 	/// 9.81 m/s^2 and 60 Hz, ten times the convergence speed m_weightConvergence), and the largest
 	/// velocity change across the support that the load handed down to a composite's base may make
