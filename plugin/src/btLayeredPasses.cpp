@@ -510,7 +510,23 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			const btVector3 base = b.m_linearVelocity + b.m_externalForceImpulse;
 			const btScalar after = (base + b.internalGetDeltaLinearVelocity()).length();
 			const btScalar before = (base + m_before[i].m_deltaLinear).length();
-			if (after <= before + m_pushSpeed[node] + weight.m_slack * fall) continue;
+			btScalar pointAfter = after, pointBefore = before;
+			if (weight.m_guardSpin && !converged && b.m_originalBody && b.m_originalBody->getInvMass() > btScalar(0))
+			{
+				// D28: an unconverged re-solve is judged by the speed of the body's kinetic energy,
+				// sqrt(2 E / m) = sqrt(v^2 + w . I w / m): its spin is no solution either (a converged
+				// one's is its layer's answer, and a body that tips turns).
+				const btRigidBody* rb = b.m_originalBody;
+				const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
+				const btVector3 spin = b.m_angularVelocity + b.m_externalTorqueImpulse;
+				const auto energySpeed = [&](btScalar linear, const btVector3& w) {
+					const btVector3 L = invInertia.solve33(w);  // I w
+					return btSqrt(linear * linear + btMax(btScalar(0), w.dot(L)) * rb->getInvMass());
+				};
+				pointAfter = energySpeed(after, spin + b.internalGetDeltaAngularVelocity());
+				pointBefore = energySpeed(before, spin + m_before[i].m_deltaAngular);
+			}
+			if (pointAfter <= pointBefore + m_pushSpeed[node] + weight.m_slack * fall) continue;
 			// D25: where statics says the body must tip, it tips with what rests on it, as one
 			// rigid body (tipWithMembers: kept only if the composite's statics says so too, its
 			// solve adds no energy and no member speeds up beyond m_tipGain steps of free fall;

@@ -46,6 +46,9 @@ struct btWeightPassParams
 	/// D27: an impact load (beyond m_tipGain |g| dt) tips a composite where it acts outside the
 	/// support, whatever the composite's weight does
 	bool m_impactTipping = false;
+	/// D28: the guard judges an unconverged re-solve by the speed of the body's kinetic energy
+	/// (spin included), not its centre of mass's speed alone
+	bool m_guardSpin = false;
 };
 
 /// The up pass's schedule for each layer (D7, D19).

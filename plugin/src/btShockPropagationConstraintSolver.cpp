@@ -294,6 +294,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_tippingComposites = m_settings.m_diagnostics.m_tippingComposites;
 		weight.m_rejectPerIsland = m_settings.m_diagnostics.m_rejectPerIsland;
 		weight.m_impactTipping = m_settings.m_diagnostics.m_impactTipping;
+		weight.m_guardSpin = m_settings.m_diagnostics.m_guardSpin;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,

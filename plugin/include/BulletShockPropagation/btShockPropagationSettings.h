@@ -169,6 +169,12 @@ struct btShockPropagationDiagnostics
 	/// would be carried. Off, the landing is stopped as if the staircase could not turn.
 	bool m_impactTipping = true;
 
+	/// D28: the weight-pass guard (D16) judges a re-solve that did not converge by the speed of the
+	/// body's kinetic energy, sqrt(2 E / m), spin included, not by its centre of mass's speed
+	/// alone: an unconverged re-solve that left a light body under a heavy load spinning at any
+	/// rate passed the guard (hostile worlds: a 10 g cube at 1.3e7 rad/s, then at 3e5 m/s).
+	bool m_guardSpin = true;
+
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
 	/// 9.81 m/s^2 and 60 Hz, ten times the convergence speed m_weightConvergence), and the largest
 	/// velocity change across the support that the load handed down to a composite's base may make
