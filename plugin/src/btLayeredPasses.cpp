@@ -1247,20 +1247,11 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 	for (int j = first + 1; j < m_tipMembers.size() && !clash; ++j)
 	{
 		const int member = m_tipMembers[j];
-		const int height = m_layers->getHeight(m_nodeOfSolverBody[member]);
-		const int k = height - 1;
-		if (k < 0 || k >= m_numLayers) continue;
-		for (int p = m_rowsOfBodyStart[member]; p < m_rowsOfBodyStart[member + 1]; ++p)
-		{
-			const int r = m_rowsOfBody[p];
-			if (r < m_contactStart[k]) continue;
-			if (r >= m_contactStart[k + 1]) break;
-			const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
+		// Its supports are the contact rows of the layer below its height.
+		visitBodyRows(member, m_layers->getHeight(m_nodeOfSolverBody[member]) - 1, pools, [&](const btSolverConstraint& row) {
 			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
-			if (m_tipOf[other] == mark || !restsOn(row, member)) continue;
-			m_tipOf[member] = -mark;  // left out (kept marked until the layer ends, then cleared)
-			break;
-		}
+			if (m_tipOf[other] != mark && restsOn(row, member)) m_tipOf[member] = -mark;  // left out (kept marked until the layer ends, then cleared)
+		});
 	}
 	int kept = first;
 	for (int j = first; j < m_tipMembers.size(); ++j)
