@@ -301,10 +301,11 @@ def plot_truth(rows, out_dir):
         text = config if config == "mlcp" else f"{config} {iterations}"
         if skipped:
             text += f" ({skipped} skipped)"
-        # Labels of configurations at the same count and nearly the same cost are stacked, not overdrawn.
+        # Labels of configurations at the same count and nearly the same cost are stacked, not overdrawn:
+        # the first above its point, the others downwards below it (upwards they reach the title).
         near = sum(1 for x in placed.get(passed, []) if abs(x - math.log10(ms)) < 0.25)
         placed.setdefault(passed, []).append(math.log10(ms))
-        ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(5, 4 + 8 * near), fontsize=7,
+        ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(5, 4 if near == 0 else -4 - 8 * near), fontsize=7,
                     rotation=30 if near == 0 else 0, color=color)
     ax.set_xscale("log")
     log_ticks(ax.xaxis)
