@@ -109,6 +109,8 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	m_supportEnd.resize(m_freeSlot[m_numLayers]);
 	m_supportGathered.resize(m_numLayers);
 	for (int k = 0; k < m_numLayers; ++k) m_supportGathered[k] = 0;
+	m_slidUp.resize(pools.m_bodies.size());
+	for (int i = 0; i < m_slidUp.size(); ++i) m_slidUp[i] = 0;
 	m_transferRows.resize(0);
 	m_rowsOfBodyBuilt = false;
 	m_composites.resize(0);
@@ -351,6 +353,17 @@ int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const bt
 		++run;
 		if (sweeps.m_min >= 0 && !joints && iteration + 1 >= sweeps.m_min && change <= converged2) break;
 	}
+	// D29: which free bodies slide on their supports as the layer ends (their friction at its bound).
+	if (withhold && sweeps.m_markSliding && layer < m_layers->getNumLayers())
+	{
+		if (m_slidUp.size() != pools.m_bodies.size()) m_slidUp.resize(pools.m_bodies.size());
+		const int numFree = m_layers->getNumFreeBodies(layer);
+		for (int i = 0; i < numFree; ++i)
+		{
+			const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, i)];
+			if (id >= 0) m_slidUp[id] = slidesOnSupport(layer, i, pools) ? 1 : 0;
+		}
+	}
 	release(layer, withhold, pools);
 	if (m_active.size()) carryComposites(layer, pools);
 	return run;
@@ -493,6 +506,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 		bool anyRejected = false;
 		m_tipFirst.resize(0);
 		m_tipBase.resize(0);
+		m_tipSlides.resize(0);
 		m_tipMembers.resize(0);
 		// D26: a rejection restores the free bodies of the layer in the rejected body's island (its
 		// component of the contact graph) instead of every free body of the layer.
@@ -526,6 +540,13 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 				pointAfter = energySpeed(after, spin + b.internalGetDeltaAngularVelocity());
 				pointBefore = energySpeed(before, spin + m_before[i].m_deltaAngular);
 			}
+			// D29: a body that slides on its supports after its layer pass and after its re-solve
+			// carries what rests on it as one rigid body, whatever the guard would say (a re-solve
+			// the guard accepts still leaves the bodies above at the velocity the layer pass dragged
+			// them to). Kept only if every member can stick to what carries it.
+			if (weight.m_rigidSliding && fall > btScalar(0) && !withComposites && m_slidUp.size() == pools.m_bodies.size() && m_slidUp[id] &&
+				slidesOnSupport(k, i, pools) && tipWithMembers(k, i, sweeps, weight, pools, &total, false, true))
+				continue;
 			if (pointAfter <= pointBefore + m_pushSpeed[node] + weight.m_slack * fall) continue;
 			// D25: where statics says the body must tip, it tips with what rests on it, as one
 			// rigid body (tipWithMembers: kept only if the composite's statics says so too, its
@@ -576,6 +597,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 				m_discardedAngular[m_tipMembers[j]].setZero();
 			}
 			++m_tippingComposites;
+			if (m_tipSlides[t]) ++m_rigidSlidingComposites;
 		}
 		if (anyRejected)
 		{
@@ -615,6 +637,49 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	m_discardedIds.resize(0);
 	m_withJoints = true;
 	return total;
+}
+
+bool btLayeredPasses::slidesOnSupport(int layer, int local, const btSolverPools& pools)
+{
+	gatherSupportRows(layer, pools);
+	const int slot = m_freeSlot[layer] + local;
+	for (int r = m_supportBegin[slot]; r < m_supportEnd[slot]; ++r)
+	{
+		const btLoadTransferRow& row = m_transferRows[r];
+		if (row.m_contact) continue;
+		const btScalar bound = btFrictionBound(*row.m_row, pools.m_contacts);
+		if (bound > btScalar(0) && btFabs(row.m_row->m_appliedImpulse) >= btScalar(0.99) * bound) return true;
+	}
+	return false;
+}
+
+bool btLayeredPasses::membersStick(int first, int mark, btScalar slack, const btSolverPools& pools)
+{
+	for (int j = first + 1; j < m_tipMembers.size(); ++j)
+	{
+		const int member = m_tipMembers[j];
+		btSolverBody& b = pools.m_bodies[member];
+		// Its contacts on members below it: their mean normal (into the member) and the smallest
+		// friction coefficient.
+		btVector3 normal(0, 0, 0);
+		btScalar mu = BT_LARGE_FLOAT;
+		visitBodyRows(member, m_layers->getHeight(m_nodeOfSolverBody[member]) - 1, pools, [&](const btSolverConstraint& row) {
+			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
+			if (m_tipOf[other] != mark) return;
+			normal += row.m_solverBodyIdA == member ? row.m_contactNormal1 : row.m_contactNormal2;
+			mu = btMin(mu, btScalar(row.m_friction));
+		});
+		if (!(normal.length2() > SIMD_EPSILON)) continue;  // it rests on no member directly (only through others)
+		normal.normalize();
+		// Its velocity change this step: from last step's velocity and this step's forces to the
+		// composite's motion. The contacts under it must give that (and what they carry above it,
+		// which moves alike).
+		const btVector3 change = b.internalGetDeltaLinearVelocity();
+		const btScalar along = change.dot(normal);
+		const btScalar across = (change - normal * along).length();
+		if (!(across <= mu * btMax(btScalar(0), along) + slack)) return false;
+	}
+	return true;
 }
 
 bool btLayeredPasses::loadsBelow(int layer, const btSolverPools& pools, btScalar speed)
@@ -1315,14 +1380,15 @@ bool btLayeredPasses::membersOutsideSupport(int layer, int id, int first, const 
 }
 
 bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun,
-									 bool impact)
+									 bool impact, bool slide)
 {
 	const int id = m_solverBodyOfNode[m_layers->getFreeBody(layer, local)];
 	const int first = m_tipMembers.size();
 	const int mark = m_tipFirst.size() + 1;
 	// D27: an impact's momentum, not the composite's weight, decides whether it turns (the guard
-	// found the load outside the support already).
-	bool kept = gatherTippingMembers(layer, id, mark, pools) && (impact || membersOutsideSupport(layer, id, first, pools));
+	// found the load outside the support already). D29: a sliding composite needs no statics (it
+	// is solved as one rigid body; whether it also turns is the solve's answer).
+	bool kept = gatherTippingMembers(layer, id, mark, pools) && (slide || impact || membersOutsideSupport(layer, id, first, pools));
 	if (kept)
 	{
 		gatherSupportRows(layer, pools);
@@ -1365,7 +1431,7 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 		int run = 0;
 		kept = fits && btSolveTippingComposite(pools.m_bodies, &m_tipMembers[first], m_tipMembers.size() - first,
 													  &m_transferRows[m_supportBegin[slot]], numRows, pools.m_contacts, sweeps,
-													  weight.m_convergedSpeed, &run);
+													  weight.m_convergedSpeed, &run, slide);
 		*sweepsRun += run;
 		// The guard's bound for a body that tips (D16), on every member: the composite leaves none
 		// faster than it began the step (last step's velocity and this step's gravity) by more
@@ -1379,6 +1445,9 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 			const btVector3 base = member.m_linearVelocity + member.m_externalForceImpulse;
 			if (!((base + member.internalGetDeltaLinearVelocity()).length() <= base.length() + gain)) kept = false;
 		}
+		// D29: a sliding composite only where each member can stick to what carries it (the
+		// merge holds them together whatever their friction).
+		if (kept && slide) kept = membersStick(first, mark, weight.m_slack * pools.m_bodies[id].m_originalBody->getGravity().length() * weight.m_timeStep, pools);
 		if (!kept)
 		{
 			restoreTipMembers(first, m_tipMembers.size(), pools);
@@ -1394,6 +1463,7 @@ bool btLayeredPasses::tipWithMembers(int layer, int local, int sweeps, const btW
 	}
 	m_tipFirst.push_back(first);
 	m_tipBase.push_back(local);
+	m_tipSlides.push_back(slide ? 1 : 0);
 	return true;
 }
 

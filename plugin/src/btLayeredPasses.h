@@ -49,6 +49,9 @@ struct btWeightPassParams
 	/// D28: the guard judges an unconverged re-solve by the speed of the body's kinetic energy
 	/// (spin included), not its centre of mass's speed alone
 	bool m_guardSpin = false;
+	/// D29: a body that slides under its up pass and its re-solve carries what rests on it as one
+	/// rigid body (D25's composite, members that can stick only)
+	bool m_rigidSliding = false;
 };
 
 /// The up pass's schedule for each layer (D7, D19).
@@ -62,6 +65,8 @@ struct btLayerSweeps
 	/// D23, m/s: a free body whose support friction is at its Coulomb limit and slips by more than
 	/// this (at setup and after the global pass) carries what rests on it; 0: never
 	btScalar m_compositeSlip = 0;
+	/// D29: note which free bodies end their layer with a support friction row at its Coulomb bound
+	bool m_markSliding = false;
 };
 
 /// The rows and bodies of one step, as Bullet's setup left them in the solver's pools.
@@ -121,6 +126,13 @@ public:
 		return n;
 	}
 	/// D25: tipping composites solved since the last call (and the count reset).
+	/// D29: the composites of sliding bodies among them (counted since the last call, and reset).
+	int takeRigidSlidingComposites()
+	{
+		const int n = m_rigidSlidingComposites;
+		m_rigidSlidingComposites = 0;
+		return n;
+	}
 	int takeTippingComposites()
 	{
 		const int n = m_tippingComposites;
@@ -221,7 +233,9 @@ private:
 	/// body (btTippingComposite.h), if statics says the composite tips (D27: for an `impact` load,
 	/// the caller's test that the load acts outside the support suffices) and its solve adds no
 	/// energy; the members' prior velocities kept in m_tipSaved. False: nothing changed.
-	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun, bool impact);
+	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun, bool impact, bool slide = false);
+	btAlignedObjectArray<char> m_slidUp;  ///< D29, per solver body: its support friction was at its bound after its layer pass
+	int m_rigidSlidingComposites = 0;     ///< D29 composites kept this step
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
 	/// those in the rejected bodies' islands (components of the contact graph); else all of them.
 	void rejectIslands(int layer, bool perIsland);
@@ -236,6 +250,14 @@ private:
 	/// The mean normal of the body's (solver body id) supports in the layer, unit, pointing into
 	/// the body; against gravity where it has none (D16 guard).
 	btVector3 supportNormal(int layer, int id, const btVector3& gravity, const btSolverPools& pools);
+	/// D29: whether a support friction row of the layer's free body `local` (against its fixated or
+	/// static supports; the layer must be fixated) is at its Coulomb bound (99%).
+	bool slidesOnSupport(int layer, int local, const btSolverPools& pools);
+	/// D29: whether every member of the composite starting at m_tipMembers[first] (the base first)
+	/// can stick to the members it rests on: its velocity change this step (from last step's
+	/// velocity and this step's forces) has a part across its contacts' mean normal within their
+	/// friction coefficient times the part along it, plus `slack` (m/s).
+	bool membersStick(int first, int mark, btScalar slack, const btSolverPools& pools);
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
 	/// Keep the impulse a row's change owes its fixated end (side A or B) for that body.
@@ -306,6 +328,7 @@ private:
 	int m_sharedFactorTransfers = 0;
 	// D25: this layer's tipping composites (members, base first), per solver body its composite + 1.
 	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipBase, m_tipOf;
+	btAlignedObjectArray<char> m_tipSlides;  ///< D29: per composite of the layer, whether a sliding body formed it
 	// D25: per solver body its contact rows, as positions in m_contactRows in ascending order (CSR,
 	// built on the first gathering of a step), and the gathering's queue of positions (a min-heap).
 	void buildRowsOfBody(const btSolverPools& pools);

@@ -276,6 +276,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	sweeps.m_min = m_settings.m_layerMinIterations;
 	sweeps.m_convergedSpeed = convergedSpeed;
 	sweeps.m_compositeSlip = composites ? compositeSlip : btScalar(0);
+	sweeps.m_markSliding = weightFeeling && m_settings.m_diagnostics.m_tippingComposites && m_settings.m_diagnostics.m_rigidSlidingComposites;
 	for (int k = 0; k < m_passes->getNumLayers(); ++k) m_stats.m_numLayerSweeps += m_passes->solveLayer(k, sweeps, params, weightFeeling, pools);
 	m_stats.m_timeLayersMs += millisecondsSince(clock);
 	if (weightFeeling)
@@ -295,6 +296,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_rejectPerIsland = m_settings.m_diagnostics.m_rejectPerIsland;
 		weight.m_impactTipping = m_settings.m_diagnostics.m_impactTipping;
 		weight.m_guardSpin = m_settings.m_diagnostics.m_guardSpin;
+		weight.m_rigidSliding = sweeps.m_markSliding;
 		// Default: at most 3 N sweeps per layer, ended as soon as the layer converges (D16).
 		const int weightSweeps = m_settings.m_weightIterations >= 0 ? m_settings.m_weightIterations : 3 * btMax(1, worldIterations);
 		m_stats.m_numWeightSweeps += m_passes->solveWeightPass(weightSweeps, params, pools,
@@ -302,6 +304,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		m_stats.m_numSlidingComposites += m_passes->finishComposites(pools);
 		m_stats.m_numSharedFactorTransfers += m_passes->takeSharedFactorTransfers();
 		m_stats.m_numTippingComposites += m_passes->takeTippingComposites();
+		m_stats.m_numRigidSlidingComposites += m_passes->takeRigidSlidingComposites();
 		m_stats.m_timeWeightFeelingMs += millisecondsSince(clock);
 	}
 

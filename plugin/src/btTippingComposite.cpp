@@ -31,7 +31,8 @@ void moveWith(btSolverBody& b, const btVector3& centre, const btVector3& V, cons
 }  // namespace
 
 bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const int* members, int numMembers, const btLoadTransferRow* rows,
-							 int numRows, const btConstraintArray& contacts, int maxSweeps, btScalar convergedSpeed, int* sweepsRun)
+							 int numRows, const btConstraintArray& contacts, int maxSweeps, btScalar convergedSpeed, int* sweepsRun,
+							 bool freeMotionBound)
 {
 	if (sweepsRun) *sweepsRun = 0;
 	if (numMembers < 2 || numRows < 1 || numRows > btTippingCompositeMaxRows) return false;
@@ -132,7 +133,23 @@ bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const i
 	// step's gravity). A support that adds some is moving into it: a fixated body's motion, which
 	// fixation gives only the base's own mass to push against (D14), not the composite's.
 	const btScalar energySolved = mass * V.length2() + Omega.dot(inertia * Omega);
-	if (!(energySolved <= energyMerged * btScalar(1.0001) + SIMD_EPSILON))
+	// D29: or no more than its motion without the rows' impulses (V and Omega less what the rows
+	// give): a row that lets go of an impulse it held (friction whose normal carries less now)
+	// returns energy the merged state had lost to it, and a passive support's solution never
+	// exceeds the free motion.
+	btScalar energyFree = energyMerged;
+	if (freeMotionBound)
+	{
+		btVector3 Vfree = V, OmegaFree = Omega;
+		for (int i = 0; i < numRows; ++i)
+		{
+			const btScalar impulse = rows[i].m_row->m_appliedImpulse;
+			Vfree -= btSidesOf(rows[i]).m_linear * (impulse / mass);
+			OmegaFree -= response[i] * impulse;
+		}
+		energyFree = btMax(energyMerged, mass * Vfree.length2() + OmegaFree.dot(inertia * OmegaFree));
+	}
+	if (!(energySolved <= energyFree * btScalar(1.0001) + SIMD_EPSILON))
 	{
 		for (int i = 0; i < numRows; ++i) rows[i].m_row->m_appliedImpulse = before[i];
 		base.internalGetDeltaLinearVelocity() = baseLinear;

@@ -42,6 +42,10 @@ subject to the following restrictions:
 /// resist (D14), not the composite's. So the solve is kept only if the merged body's kinetic
 /// energy did not grow; else the rows are restored and false is returned.
 ///
+/// freeMotionBound (D29): the solve is kept as well if the merged body ends with no more kinetic
+/// energy than its motion without the rows' impulses: a row that lets go of an impulse it held
+/// (friction whose normal now carries less) gives back energy the merged state had lost to it.
+///
 /// Members must be dynamic, with linear and angular factors 1 and an invertible inertia, and the
 /// base at most btTippingCompositeMaxRows rows; returns false (nothing changed) otherwise.
 /// sweepsRun: the sweeps made. Measured (docs/design.md, D25): a column of 6 cubes tipping over a
@@ -50,6 +54,7 @@ subject to the following restrictions:
 const int btTippingCompositeMaxRows = 64;
 
 bool btSolveTippingComposite(btAlignedObjectArray<btSolverBody>& bodies, const int* members, int numMembers, const btLoadTransferRow* rows,
-							 int numRows, const btConstraintArray& contacts, int maxSweeps, btScalar convergedSpeed, int* sweepsRun);
+							 int numRows, const btConstraintArray& contacts, int maxSweeps, btScalar convergedSpeed, int* sweepsRun,
+							 bool freeMotionBound = false);
 
 #endif  // BT_SHOCK_PROPAGATION_TIPPING_COMPOSITE_H

@@ -127,10 +127,13 @@ TEST(ImpactTipping, WithoutItTheLandingsAreStoppedFlatAndTheColumnTipsLate)
 {
 	// What D27 is for: without it D25 forms no composite where the landing's momentum acts outside
 	// a support but the part's weight does not, the guard rejects the re-solve of the body under
-	// the hinge, and the landing's momentum is discarded.
+	// the hinge, and the landing's momentum is discarded. D29 (a body that slides carries what rests
+	// on it) carries part of that momentum through the landing bodies that slip, so it is off here
+	// too (with D29 alone the column reaches half height at 4.03 s, 8% late; without both 5.08 s).
 	const double expected = referenceHalfHeightTime();
 	harness::SolverSpec without = spec::shock();
 	without.settings.m_diagnostics.m_impactTipping = false;
+	without.settings.m_diagnostics.m_rigidSlidingComposites = false;
 	const double t = leaningColumnHalfHeightTime(without, 8.0);
 	std::printf("leaning column at half height without D27: %.3f s (reference %.3f s)\n", t, expected);
 	EXPECT_GT(t, 1.2 * expected) << "s: expected the column to topple late without D27";

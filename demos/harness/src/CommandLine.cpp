@@ -184,6 +184,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_impactTipping), false, "noimpact"),
 		switchFlag("--guard-linear-only", "plugin: the weight-pass guard judges an unconverged re-solve by the centre-of-mass speed only, not its spin (D28 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_guardSpin), false, "guardlinear"),
+		switchFlag("--no-rigid-sliding", "plugin: a body that slides is re-solved alone, not with what rests on it as one rigid body (D29 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_rigidSlidingComposites), false, "norigidslide"),
 		switchFlag("--composites", "plugin: a sliding base carries the inertia of what rests on it (D23, opt-in)",
 				   diagnostic(&btShockPropagationDiagnostics::m_slidingComposites), true, "composites"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
