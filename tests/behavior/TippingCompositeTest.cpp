@@ -44,8 +44,9 @@ TEST(TippingComposites, WithoutThemTheWeightPassGuardHoldsTheColumnUp)
 
 TEST(TippingComposites, StandingStacksFormNone)
 {
-	// Statics says these stand: no body's load acts outside its support, so no composite forms and
-	// the step is the one before D25.
+	// Statics says these stand: no body's load acts outside its support and no support friction is
+	// at its bound, so no composite forms (D25's or D29's, which the count includes) and the step is
+	// the one before D25.
 	for (const std::string& scene : {std::string("tower"), std::string("pyramid")})
 	{
 		harness::Trial run(spec::shock(), scene, {{scene == "tower" ? "n" : "base", scene == "tower" ? 20.0 : 10.0}});

@@ -31,7 +31,7 @@ struct btShockPropagationStatistics
 	int m_numWeightRejections = 0;///< weight-pass layers that could not carry their load (D13 guard)
 	int m_numSlidingComposites = 0;///< sliding bases that carried what rests on them (D23)
 	int m_numSharedFactorTransfers = 0;///< load transfers solved with their support block's factor (D24)
-	int m_numTippingComposites = 0;///< bodies that tipped with what rests on them as one rigid body (D25)
+	int m_numTippingComposites = 0;///< bodies that tipped (D25) or slid (D29) with what rests on them as one rigid body
 	int m_numRigidSlidingComposites = 0;///< of those, bodies that slid with what rests on them (D29)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
