@@ -1,17 +1,18 @@
-// D29 (docs/design.md, section 4n): a body that slides on its supports after its layer pass and
+// D29 (docs/design.md, section 4n; opt-in, m_diagnostics.m_rigidSlidingComposites): a body that slides on its supports after its layer pass and
 // after its weight-pass re-solve carries what rests on it, as one rigid body (D25's composite
 // solve), where every member can stick to what carries it. Expected values are Coulomb's:
 // g (sin a - mu cos a) on a ramp, (F - mu W) / M for a pushed stack, mu g for a box its base
-// slides out from under. That resting stacks form none is TippingComposites.StandingStacksFormNone
-// (D29's composites are counted among D25's).
+// slides out from under.
 #include "Fixture.h"
 
 #include <BulletShockPropagation/btShockPropagationConstraintSolver.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace
 {
@@ -36,6 +37,13 @@ double massOf(const std::vector<btRigidBody*>& bodies)
 	double m = 0;
 	for (const btRigidBody* b : bodies) m += 1.0 / double(b->getInvMass());
 	return m;
+}
+
+/// The plugin's defaults with D29 on.
+harness::SolverSpec rigidSliding(harness::SolverSpec spec)
+{
+	spec.settings.m_diagnostics.m_rigidSlidingComposites = true;
+	return spec;
 }
 
 /// Steps `trial` for 2 s at 60 Hz, pushing `pushed` with `force` each step (if any), and fits the
@@ -84,7 +92,7 @@ void expectCoulombRate(const char* name, SlideRun (*run)(const harness::SolverSp
 {
 	for (int iterations : {3, 5, 10, 20})
 	{
-		const SlideRun r = run(spec::shock(iterations));
+		const SlideRun r = run(rigidSliding(spec::shock(iterations)));
 		std::printf("%s, %d iterations: %.3f m/s^2 (Coulomb %.3f), %d composites\n", name, iterations, r.acceleration, expected, r.composites);
 		EXPECT_GT(r.composites, 0) << name << ", " << iterations << " iterations";
 		EXPECT_NEAR(r.acceleration, expected, tolerance * expected) << name << ", " << iterations << " iterations";
@@ -99,21 +107,25 @@ TEST(RigidSliding, ARampStackSlidesAtTheCoulombRateAtEveryIterationCount)
 {
 	// Measured (float, this test's momentum fit): 1.493-1.516 m/s^2 at 3, 5, 10 and 20 iterations.
 	expectCoulombRate("ramp stack", rampStack, kRampExpected, 0.03);
-	const SlideRun solverOnly = rampStack(spec::shockSolverOnly(10));
+	const SlideRun solverOnly = rampStack(rigidSliding(spec::shockSolverOnly(10)));
 	EXPECT_NEAR(solverOnly.acceleration, kRampExpected, 0.03 * kRampExpected) << "solver-only mode";
 }
 
 TEST(RigidSliding, WithoutItTheRampStackSlidesTooSlowly)
 {
 	// What D29 is for: the layer pass drags the boxes above to the bottom box's velocity as if it
-	// had no load, the weight pass slows the bottom box alone, and the stack lags the law
-	// (measured 1.351 m/s^2 at 10 iterations).
-	harness::SolverSpec without = spec::shock(10);
-	without.settings.m_diagnostics.m_rigidSlidingComposites = false;
-	const SlideRun run = rampStack(without);
-	std::printf("ramp stack without D29: %.3f m/s^2 (Coulomb %.3f)\n", run.acceleration, kRampExpected);
-	EXPECT_EQ(run.composites, 0);
-	EXPECT_LT(run.acceleration, 0.95 * kRampExpected) << "m/s^2: expected the stack to lag without D29";
+	// had no load, the weight pass slows the bottom box alone, and the stack lags the law. Measured
+	// (this test's momentum fit) at 3 / 5 / 10 / 20 iterations: float 0.80 / 1.27 / 1.35 / 1.42 m/s^2,
+	// double 1.23 / 1.25 / 1.45 / 1.47 (Coulomb 1.512; with D29 every count within 1.5%).
+	double slowest = kRampExpected;
+	for (int iterations : {3, 5, 10, 20})
+	{
+		const SlideRun run = rampStack(spec::shock(iterations));  // the default: D29 off
+		std::printf("ramp stack without D29, %d iterations: %.3f m/s^2 (Coulomb %.3f)\n", iterations, run.acceleration, kRampExpected);
+		EXPECT_EQ(run.composites, 0);
+		slowest = std::min(slowest, run.acceleration);
+	}
+	EXPECT_LT(slowest, 0.95 * kRampExpected) << "m/s^2: expected the stack to lag without D29";
 }
 
 TEST(RigidSliding, APushedStackAcceleratesAtTheCoulombRate)
@@ -131,7 +143,7 @@ TEST(RigidSliding, ABoxThatCannotStickIsNotCarriedAlong)
 	// bottom box at 18.6 m/s^2). A composite would carry the top box along at the bottom box's
 	// rate; D29's stick test refuses it. Measured after 0.25 s: top box 0.206 m/s (mu g t = 0.245;
 	// a converged stock solve, SI 8 sub-steps x 50 iterations, 0.245), bottom box 4.8 m/s.
-	harness::Trial trial(spec::shock(10), "pushed_stack", {{"n", 2.0}, {"groundMu", 0.5}, {"boxMu", 0.1}});
+	harness::Trial trial(rigidSliding(spec::shock(10)), "pushed_stack", {{"n", 2.0}, {"groundMu", 0.5}, {"boxMu", 0.1}});
 	btRigidBody* bottom = trial.named("bottom");
 	btRigidBody* top = trial.named("top");
 	const double force = 3.0 * 0.5 * massOf(trial.bodies()) * kG;
@@ -147,4 +159,21 @@ TEST(RigidSliding, ABoxThatCannotStickIsNotCarriedAlong)
 	EXPECT_EQ(composites, 0);
 	EXPECT_NEAR(top->getLinearVelocity().x(), 0.1 * kG * t, 0.25 * 0.1 * kG * t) << "m/s: the top box slips";
 	EXPECT_GT(bottom->getLinearVelocity().x(), 10 * top->getLinearVelocity().x()) << "m/s: the bottom box slides out";
+}
+
+TEST(RigidSliding, RestingStacksFormNone)
+{
+	// No support friction at its bound: no D29 composite, and the stacks stand as without it.
+	for (const std::string& scene : {std::string("tower"), std::string("pyramid")})
+	{
+		harness::Trial run(rigidSliding(spec::shock()), scene, {{scene == "tower" ? "n" : "base", scene == "tower" ? 20.0 : 10.0}});
+		int composites = 0;
+		for (int i = 0; i < 120; ++i)
+		{
+			run.step();
+			composites += run.simulation().shockSolver()->getStatistics().m_numTippingComposites;
+		}
+		EXPECT_EQ(composites, 0) << scene;
+		EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters) << scene;
+	}
 }
