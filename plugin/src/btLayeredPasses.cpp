@@ -72,6 +72,7 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 							const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools)
 {
 	m_layers = &layers;
+	m_bodiesOfStep = &pools.m_bodies;
 	m_numLayers = btMax(1, layers.getNumLayers());
 	btAlignedObjectArray<int>& layerOf = m_scratchLayer;
 	const int numContacts = pools.m_contacts.size();
@@ -111,6 +112,17 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	for (int k = 0; k < m_numLayers; ++k) m_supportGathered[k] = 0;
 	m_slidUp.resize(pools.m_bodies.size());
 	for (int i = 0; i < m_slidUp.size(); ++i) m_slidUp[i] = 0;
+	// The bodies in a joint this step, from the step's joint rows: Bullet counts a body's
+	// constraint refs only for joints added with disableCollisionsBetweenLinkedBodies, so
+	// btRigidBody::getNumConstraintRefs() misses joints added as addConstraint(c) adds them.
+	m_jointed.resize(pools.m_bodies.size());
+	for (int i = 0; i < m_jointed.size(); ++i) m_jointed[i] = 0;
+	for (int i = 0; i < pools.m_joints.size(); ++i)
+	{
+		const btSolverConstraint& c = pools.m_joints[i];
+		if (c.m_solverBodyIdA >= 0 && c.m_solverBodyIdA < m_jointed.size()) m_jointed[c.m_solverBodyIdA] = 1;
+		if (c.m_solverBodyIdB >= 0 && c.m_solverBodyIdB < m_jointed.size()) m_jointed[c.m_solverBodyIdB] = 1;
+	}
 	m_transferRows.resize(0);
 	m_rowsOfBodyBuilt = false;
 	m_composites.resize(0);
@@ -639,6 +651,14 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	return total;
 }
 
+bool btLayeredPasses::inJoint(int id) const
+{
+	if (id < 0 || !m_bodiesOfStep || id >= m_bodiesOfStep->size()) return false;
+	if (id < m_jointed.size() && m_jointed[id]) return true;
+	const btRigidBody* rb = (*m_bodiesOfStep)[id].m_originalBody;
+	return rb && rb->getNumConstraintRefs() > 0;
+}
+
 bool btLayeredPasses::slidesOnSupport(int layer, int local, const btSolverPools& pools)
 {
 	gatherSupportRows(layer, pools);
@@ -1084,7 +1104,7 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 		// A body already carried by a composite below it moves with that composite.
 		if (!rb || node < 0 || compositeOf(id) >= 0 || m_carried[id]) continue;
 		// A body in a joint moves with what it is jointed to, which the composite does not model.
-		if (rb->getNumConstraintRefs() > 0) continue;
+		if (inJoint(id)) continue;
 		// Sliding: the friction at its Coulomb bound and still slipping after the global pass.
 		if (!(btFabs(c.m_appliedImpulse) >= kAtCoulombLimit * c.m_friction * normal)) continue;
 		if (!(btFabs(btRowVelocityError(c, bodies)) > slip)) continue;
@@ -1110,7 +1130,7 @@ void btLayeredPasses::formComposites(int layer, const btSolverPools& pools, btSc
 				const int up = m_inComposite[a] ? b : a;
 				const btRigidBody* upper = dynamicBody(up);
 				const int upNode = m_nodeOfSolverBody[up];
-				if (!upper || upNode < 0 || upper->getNumConstraintRefs() > 0 || m_layers->getHeight(upNode) <= height) continue;
+				if (!upper || upNode < 0 || inJoint(up) || m_layers->getHeight(upNode) <= height) continue;
 				// Resting on it: the contact carried a load last step (a body landing now is an impact).
 				const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
 				if (!cp || !(cp->m_appliedImpulse > btScalar(0))) continue;
@@ -1247,7 +1267,7 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 	const auto eligible = [&](int body) -> const btRigidBody* {
 		const btSolverBody& b = bodies[body];
 		const btRigidBody* rb = b.m_originalBody;
-		if (!rb || !(rb->getInvMass() > btScalar(0)) || rb->getNumConstraintRefs() > 0) return 0;
+		if (!rb || !(rb->getInvMass() > btScalar(0)) || inJoint(body)) return 0;
 		if (b.m_linearFactor != btVector3(1, 1, 1) || b.m_angularFactor != btVector3(1, 1, 1)) return 0;
 		return rb;
 	};

@@ -235,6 +235,11 @@ private:
 	/// energy; the members' prior velocities kept in m_tipSaved. False: nothing changed.
 	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun, bool impact, bool slide = false);
 	btAlignedObjectArray<char> m_slidUp;  ///< D29, per solver body: its support friction was at its bound after its layer pass
+	btAlignedObjectArray<char> m_jointed; ///< per solver body: a joint row of this step touches it
+	/// Whether the solver body is in a joint: a joint row of this step touches it, or Bullet counts
+	/// a constraint ref (a disabled joint has no rows but keeps its ref).
+	bool inJoint(int id) const;
+	const btAlignedObjectArray<btSolverBody>* m_bodiesOfStep = 0;
 	int m_rigidSlidingComposites = 0;     ///< D29 composites kept this step
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
 	/// those in the rejected bodies' islands (components of the contact graph); else all of them.

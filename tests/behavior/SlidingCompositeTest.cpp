@@ -85,8 +85,8 @@ TEST(SlidingComposites, RampStackGainsTheMomentumOfKineticFriction)
 		EXPECT_NEAR(s.momentumRatio, 1.0, 0.02) << iterations << " iterations";
 		EXPECT_GT(s.composites, 0);
 	}
-	// Without D23 and without D29 (opt-in, which carries the stack as one rigid body and gains the
-	// same momentum: 0.99 at 5 iterations).
+	// Without D23 and without D29 (on by default since, which carries the stack as one rigid body
+	// and gains the same momentum: 0.99 at 5 iterations).
 	harness::SolverSpec neither = withoutComposites(spec::shock(5));
 	neither.settings.m_diagnostics.m_rigidSlidingComposites = false;
 	const Slide alone = rampStack(neither, 2.0);

@@ -5,11 +5,14 @@
 #include "Fixture.h"
 
 #include <BulletShockPropagation/btShockPropagationConstraintSolver.h>
+#include <btBulletDynamicsCommon.h>
 #include <truth/TruthCase.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 #include <string>
 
 // The ledge column (truth/ledge_column) is measured by truth::measureLedgeTip, as the truth case
@@ -45,11 +48,11 @@ TEST(TippingComposites, WithoutThemTheWeightPassGuardHoldsTheColumnUp)
 TEST(TippingComposites, StandingStacksFormNone)
 {
 	// Statics says these stand: no body's load acts outside its support, so no composite forms and
-	// the step is the one before D25. With D29 (opt-in) on as well: no support friction is at its
-	// bound, so no sliding composite forms either (D29's are counted among these).
-	harness::SolverSpec withRigidSliding = spec::shock();
-	withRigidSliding.settings.m_diagnostics.m_rigidSlidingComposites = true;
-	for (const harness::SolverSpec& solver : {spec::shock(), withRigidSliding})
+	// the step is the one before D25. No support friction is at its bound either, so no D29
+	// composite forms (they are counted among these); the same without D29.
+	harness::SolverSpec withoutRigidSliding = spec::shock();
+	withoutRigidSliding.settings.m_diagnostics.m_rigidSlidingComposites = false;
+	for (const harness::SolverSpec& solver : {spec::shock(), withoutRigidSliding})
 		for (const std::string& scene : {std::string("tower"), std::string("pyramid")})
 		{
 			harness::Trial run(solver, scene, {{scene == "tower" ? "n" : "base", scene == "tower" ? 20.0 : 10.0}});
@@ -131,10 +134,9 @@ TEST(ImpactTipping, WithoutItTheLandingsAreStoppedFlatAndTheColumnTipsLate)
 {
 	// What D27 is for: without it D25 forms no composite where the landing's momentum acts outside
 	// a support but the part's weight does not, the guard rejects the re-solve of the body under
-	// the hinge, and the landing's momentum is discarded. D29 (opt-in: a body that slides carries
-	// what rests on it) carries part of that momentum through the landing bodies that slip, so it is
-	// off here whatever the default (with D29 alone the column reaches half height at 4.03 s, 8% late;
-	// without both 5.08 s).
+	// the hinge, and the landing's momentum is discarded. D29 (a body that slides carries what rests
+	// on it) carries part of that momentum through the landing bodies that slip, so it is off here
+	// too (with D29 alone the column reaches half height at 4.03 s, 8% late; without both 5.08 s).
 	const double expected = referenceHalfHeightTime();
 	harness::SolverSpec without = spec::shock();
 	without.settings.m_diagnostics.m_impactTipping = false;
@@ -142,4 +144,38 @@ TEST(ImpactTipping, WithoutItTheLandingsAreStoppedFlatAndTheColumnTipsLate)
 	const double t = leaningColumnHalfHeightTime(without, 8.0);
 	std::printf("leaning column at half height without D27: %.3f s (reference %.3f s)\n", t, expected);
 	EXPECT_GT(t, 1.2 * expected) << "s: expected the column to topple late without D27";
+}
+
+TEST(TippingComposites, AJointedBodyIsLeftOutWhetherOrNotItsJointDisablesCollisions)
+{
+	// A composite moves its members as one rigid body, which a joint does not allow, so bodies in a
+	// joint are left out. Bullet counts a body's constraint refs only for joints added with
+	// disableCollisionsBetweenLinkedBodies = true; the plugin reads the step's joint rows instead.
+	// The ledge column with its top cube pinned to the world at its centre (no collision is at
+	// stake: the world has no collision object): the same motion with either flag, and the pin
+	// holds (0.70 cm at most in 1 s with either flag). Measured before the fix: with the flag false
+	// the composites took the pinned cube in, every body ended elsewhere and the pin stretched
+	// 0.93 cm.
+	std::vector<btVector3> endOf[2];
+	for (int disable = 0; disable < 2; ++disable)
+	{
+		harness::Trial trial(spec::shock(), "ledge_column");
+		btRigidBody* top = trial.scene().named("top");
+		btPoint2PointConstraint pin(*top, btVector3(0, 0, 0));
+		trial.simulation().world().addConstraint(&pin, disable == 1);
+		const btVector3 anchor = top->getCenterOfMassPosition();
+		double stretch = 0;
+		for (int k = 0; k < 60; ++k)
+		{
+			trial.step();
+			stretch = std::max(stretch, double((top->getCenterOfMassPosition() - anchor).length()));
+		}
+		trial.simulation().world().removeConstraint(&pin);
+		for (const btRigidBody* b : trial.bodies()) endOf[disable].push_back(b->getCenterOfMassPosition());
+		std::printf("disableCollisionsBetweenLinkedBodies %d: pin stretched at most %.4f m\n", disable, stretch);
+		EXPECT_LT(stretch, 0.01) << "m: the pin holds (disableCollisionsBetweenLinkedBodies " << disable << ")";
+	}
+	ASSERT_EQ(endOf[0].size(), endOf[1].size());
+	for (size_t i = 0; i < endOf[0].size(); ++i)
+		EXPECT_LT((endOf[0][i] - endOf[1][i]).length(), 1e-4) << "body " << i << ": the flag changed the motion";
 }

@@ -175,7 +175,7 @@ struct btShockPropagationDiagnostics
 	/// rate passed the guard (hostile worlds: a 10 g cube at 1.3e7 rad/s, then at 3e5 m/s).
 	bool m_guardSpin = true;
 
-	/// D29 (opt-in): a body that slides carries what rests on it, as one rigid body. Where a body's support
+	/// D29: a body that slides carries what rests on it, as one rigid body. Where a body's support
 	/// friction is at its Coulomb bound after its layer pass and again after its weight-pass
 	/// re-solve, the body and everything resting on it are merged and solved as D25's composite
 	/// (without D25's tipping statics), provided every member can stick to what carries it (the
@@ -185,10 +185,8 @@ struct btShockPropagationDiagnostics
 	/// pass over layers diverges by the ratio of the carried mass to the body's own. Off, a pushed
 	/// stack of 5 accelerates at 1.7-2.9 m/s^2 where Coulomb says 1.96; on, at 1.84-2.11 (docs/design.md,
 	/// D29). With it, a composite's solve is kept if it leaves the merged body with no more kinetic
-	/// energy than before or than its motion without the support rows (D25 alone: before). Off by
-	/// default: over 3,000 clean hostile worlds 4 (float) and 5 (double) more seeds exceed the speed
-	/// cap with it, and the first 100 (CI's) in double cross the parity gate with stock.
-	bool m_rigidSlidingComposites = false;
+	/// energy than before or than its motion without the support rows (D25 alone: before).
+	bool m_rigidSlidingComposites = true;
 
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
 	/// 9.81 m/s^2 and 60 Hz, ten times the convergence speed m_weightConvergence), and the largest
