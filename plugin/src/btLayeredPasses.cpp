@@ -72,7 +72,6 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 							const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools)
 {
 	m_layers = &layers;
-	m_bodiesOfStep = &pools.m_bodies;
 	m_numLayers = btMax(1, layers.getNumLayers());
 	btAlignedObjectArray<int>& layerOf = m_scratchLayer;
 	const int numContacts = pools.m_contacts.size();
@@ -116,7 +115,11 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	// constraint refs only for joints added with disableCollisionsBetweenLinkedBodies, so
 	// btRigidBody::getNumConstraintRefs() misses joints added as addConstraint(c) adds them.
 	m_jointed.resize(pools.m_bodies.size());
-	for (int i = 0; i < m_jointed.size(); ++i) m_jointed[i] = 0;
+	for (int i = 0; i < m_jointed.size(); ++i)
+	{
+		const btRigidBody* rb = pools.m_bodies[i].m_originalBody;
+		m_jointed[i] = rb && rb->getNumConstraintRefs() > 0 ? 1 : 0;
+	}
 	for (int i = 0; i < pools.m_joints.size(); ++i)
 	{
 		const btSolverConstraint& c = pools.m_joints[i];
@@ -368,7 +371,6 @@ int btLayeredPasses::solveLayer(int layer, const btLayerSweeps& sweeps, const bt
 	// D29: which free bodies slide on their supports as the layer ends (their friction at its bound).
 	if (withhold && sweeps.m_markSliding && layer < m_layers->getNumLayers())
 	{
-		if (m_slidUp.size() != pools.m_bodies.size()) m_slidUp.resize(pools.m_bodies.size());
 		const int numFree = m_layers->getNumFreeBodies(layer);
 		for (int i = 0; i < numFree; ++i)
 		{
@@ -556,7 +558,7 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			// carries what rests on it as one rigid body, whatever the guard would say (a re-solve
 			// the guard accepts still leaves the bodies above at the velocity the layer pass dragged
 			// them to). Kept only if every member can stick to what carries it.
-			if (weight.m_rigidSliding && fall > btScalar(0) && !withComposites && m_slidUp.size() == pools.m_bodies.size() && m_slidUp[id] &&
+			if (weight.m_rigidSliding && fall > btScalar(0) && !withComposites && m_slidUp[id] &&
 				slidesOnSupport(k, i, pools) && tipWithMembers(k, i, sweeps, weight, pools, &total, false, true))
 				continue;
 			if (pointAfter <= pointBefore + m_pushSpeed[node] + weight.m_slack * fall) continue;
@@ -649,14 +651,6 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 	m_discardedIds.resize(0);
 	m_withJoints = true;
 	return total;
-}
-
-bool btLayeredPasses::inJoint(int id) const
-{
-	if (id < 0 || !m_bodiesOfStep || id >= m_bodiesOfStep->size()) return false;
-	if (id < m_jointed.size() && m_jointed[id]) return true;
-	const btRigidBody* rb = (*m_bodiesOfStep)[id].m_originalBody;
-	return rb && rb->getNumConstraintRefs() > 0;
 }
 
 bool btLayeredPasses::slidesOnSupport(int layer, int local, const btSolverPools& pools)

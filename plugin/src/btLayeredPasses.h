@@ -125,14 +125,15 @@ public:
 		m_sharedFactorTransfers = 0;
 		return n;
 	}
-	/// D25: tipping composites solved since the last call (and the count reset).
-	/// D29: the composites of sliding bodies among them (counted since the last call, and reset).
+	/// D29: the composites of sliding bodies among the tipping composites (counted since the last
+	/// call, and reset).
 	int takeRigidSlidingComposites()
 	{
 		const int n = m_rigidSlidingComposites;
 		m_rigidSlidingComposites = 0;
 		return n;
 	}
+	/// D25: tipping composites solved since the last call (and the count reset).
 	int takeTippingComposites()
 	{
 		const int n = m_tippingComposites;
@@ -235,11 +236,10 @@ private:
 	/// energy; the members' prior velocities kept in m_tipSaved. False: nothing changed.
 	bool tipWithMembers(int layer, int local, int sweeps, const btWeightPassParams& weight, const btSolverPools& pools, int* sweepsRun, bool impact, bool slide = false);
 	btAlignedObjectArray<char> m_slidUp;  ///< D29, per solver body: its support friction was at its bound after its layer pass
-	btAlignedObjectArray<char> m_jointed; ///< per solver body: a joint row of this step touches it
-	/// Whether the solver body is in a joint: a joint row of this step touches it, or Bullet counts
-	/// a constraint ref (a disabled joint has no rows but keeps its ref).
-	bool inJoint(int id) const;
-	const btAlignedObjectArray<btSolverBody>* m_bodiesOfStep = 0;
+	/// Per solver body, whether it is in a joint: a joint row of this step touches it, or Bullet
+	/// counts a constraint ref (a disabled joint has no rows but keeps its ref). Built in build().
+	btAlignedObjectArray<char> m_jointed;
+	bool inJoint(int id) const { return id >= 0 && id < m_jointed.size() && m_jointed[id]; }
 	int m_rigidSlidingComposites = 0;     ///< D29 composites kept this step
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
 	/// those in the rejected bodies' islands (components of the contact graph); else all of them.
