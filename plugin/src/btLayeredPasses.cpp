@@ -669,26 +669,56 @@ bool btLayeredPasses::slidesOnSupport(int layer, int local, const btSolverPools&
 
 bool btLayeredPasses::membersStick(int first, int mark, btScalar slack, const btSolverPools& pools)
 {
-	for (int j = first + 1; j < m_tipMembers.size(); ++j)
+	// Per member above the base: its height, its mass, the impulse it took this step (m dv: from
+	// last step's velocity and this step's forces to the composite's motion) and its contacts on
+	// members below it (normals into the member, summed; the smallest friction coefficient).
+	const int n = m_tipMembers.size() - first - 1;
+	m_stickLevels.resize(n);
+	for (int j = 0; j < n; ++j)
 	{
-		const int member = m_tipMembers[j];
+		const int member = m_tipMembers[first + 1 + j];
 		btSolverBody& b = pools.m_bodies[member];
-		// Its contacts on members below it: their mean normal (into the member) and the smallest
-		// friction coefficient.
-		btVector3 normal(0, 0, 0);
-		btScalar mu = BT_LARGE_FLOAT;
-		visitBodyRows(member, m_layers->getHeight(m_nodeOfSolverBody[member]) - 1, pools, [&](const btSolverConstraint& row) {
+		btStickLevel& level = m_stickLevels[j];
+		level.m_height = m_layers->getHeight(m_nodeOfSolverBody[member]);
+		level.m_mass = btScalar(1) / b.m_originalBody->getInvMass();
+		level.m_impulse = b.internalGetDeltaLinearVelocity() * level.m_mass;
+		level.m_normal.setZero();
+		level.m_mu = BT_LARGE_FLOAT;
+		visitBodyRows(member, level.m_height - 1, pools, [&](const btSolverConstraint& row) {
 			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
 			if (m_tipOf[other] != mark) return;
-			normal += row.m_solverBodyIdA == member ? row.m_contactNormal1 : row.m_contactNormal2;
-			mu = btMin(mu, btScalar(row.m_friction));
+			level.m_normal += row.m_solverBodyIdA == member ? row.m_contactNormal1 : row.m_contactNormal2;
+			level.m_mu = btMin(level.m_mu, btScalar(row.m_friction));
 		});
-		if (!(normal.length2() > SIMD_EPSILON)) continue;  // it rests on no member directly (only through others)
+	}
+	// Each height is a cut through the composite: the contacts under the members at that height
+	// carry the impulses of every member at or above it (for a column, exactly; a composite that
+	// turns gives its higher members more than its lower ones, so a member's own change is not
+	// what its contacts carry). The cut sticks if that sum, per unit of the mass above, has a part
+	// across the cut's mean normal within the smallest mu times the part along it, plus `slack`.
+	for (int j = 0; j < n; ++j)
+	{
+		const int height = m_stickLevels[j].m_height;
+		bool done = false;
+		for (int i = 0; i < j && !done; ++i) done = m_stickLevels[i].m_height == height;
+		if (done) continue;
+		btVector3 impulse(0, 0, 0), normal(0, 0, 0);
+		btScalar mass = 0, mu = BT_LARGE_FLOAT;
+		for (int i = 0; i < n; ++i)
+		{
+			const btStickLevel& level = m_stickLevels[i];
+			if (level.m_height < height) continue;
+			impulse += level.m_impulse;
+			mass += level.m_mass;
+			if (level.m_height == height && level.m_normal.length2() > SIMD_EPSILON)
+			{
+				normal += level.m_normal;
+				mu = btMin(mu, level.m_mu);
+			}
+		}
+		if (!(normal.length2() > SIMD_EPSILON)) continue;  // nothing at this height rests on a member directly
 		normal.normalize();
-		// Its velocity change this step: from last step's velocity and this step's forces to the
-		// composite's motion. The contacts under it must give that (and what they carry above it,
-		// which moves alike).
-		const btVector3 change = b.internalGetDeltaLinearVelocity();
+		const btVector3 change = impulse / mass;
 		const btScalar along = change.dot(normal);
 		const btScalar across = (change - normal * along).length();
 		if (!(across <= mu * btMax(btScalar(0), along) + slack)) return false;

@@ -258,10 +258,11 @@ private:
 	/// D29: whether a support friction row of the layer's free body `local` (against its fixated or
 	/// static supports; the layer must be fixated) is at its Coulomb bound (99%).
 	bool slidesOnSupport(int layer, int local, const btSolverPools& pools);
-	/// D29: whether every member of the composite starting at m_tipMembers[first] (the base first)
-	/// can stick to the members it rests on: its velocity change this step (from last step's
-	/// velocity and this step's forces) has a part across its contacts' mean normal within their
-	/// friction coefficient times the part along it, plus `slack` (m/s).
+	/// D29: whether the composite starting at m_tipMembers[first] (the base first) sticks at every
+	/// height: the impulses this step (from last step's velocity and this step's forces) of the
+	/// members at or above it, summed, have a part across the mean normal of the contacts under
+	/// that height within their smallest friction coefficient times the part along it, plus
+	/// `slack` (m/s, per unit of the mass above).
 	bool membersStick(int first, int mark, btScalar slack, const btSolverPools& pools);
 	/// Mark (1) or unmark (0) the layer's lower bodies in m_fixated.
 	void markFixated(int layer, char value);
@@ -333,6 +334,16 @@ private:
 	int m_sharedFactorTransfers = 0;
 	// D25: this layer's tipping composites (members, base first), per solver body its composite + 1.
 	btAlignedObjectArray<int> m_tipMembers, m_tipFirst, m_tipBase, m_tipOf;
+	/// membersStick's scratch: one entry per member above the base.
+	struct btStickLevel
+	{
+		int m_height;
+		btScalar m_mass;      ///< kg
+		btVector3 m_impulse;  ///< m dv this step (N s)
+		btVector3 m_normal;   ///< its contacts on members below, normals summed
+		btScalar m_mu;        ///< their smallest friction coefficient
+	};
+	btAlignedObjectArray<btStickLevel> m_stickLevels;
 	btAlignedObjectArray<char> m_tipSlides;  ///< D29: per composite of the layer, whether a sliding body formed it
 	// D25: per solver body its contact rows, as positions in m_contactRows in ascending order (CSR,
 	// built on the first gathering of a step), and the gathering's queue of positions (a min-heap).

@@ -22,6 +22,7 @@ subject to the following restrictions:
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "LinearMath/btQuickprof.h"
 #include "btBodyChecks.h"
+#include "btBoxFaceCorners.h"
 #include "btLayeredPasses.h"
 #include "btWithheldReactions.h"
 #include "btPositionCorrection.h"
@@ -214,6 +215,13 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	if (m_settings.m_weightFeeling && m_settings.m_diagnostics.m_warmStartFactor >= btScalar(0)) stepInfo.m_warmstartingFactor = m_settings.m_diagnostics.m_warmStartFactor;  // D16
 	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
+	// D30: a box face resting on a box keeps its corners (Bullet's box-box test keeps only those
+	// that penetrate), before the rows are set up from the points.
+	if (m_settings.m_keepBoxFaceCorners)
+	{
+		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * gravity * info.m_timeStep * info.m_timeStep;
+		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numBoxFaceCorners += btKeepBoxFaceCorners(*m_manifolds[i], reach);
+	}
 	// D18: a resting pair keeps its load when Bullet replaces its points (within the weight pass's
 	// convergence speed: the same scale of "at rest").
 	if (m_settings.m_weightFeeling && m_manifolds.size())

@@ -186,6 +186,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_guardSpin), false, "guardlinear"),
 		switchFlag("--no-rigid-sliding", "plugin: a body that slides is re-solved alone, not with what rests on it as one rigid body (D29 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_rigidSlidingComposites), false, "norigidslide"),
+		switchFlag("--no-box-face-corners", "plugin: a box face resting on a box gets only the points Bullet's box-box test reports (D30 off)",
+				   field(&btShockPropagationSettings::m_keepBoxFaceCorners), false, "nocorners"),
 		switchFlag("--composites", "plugin: a sliding base carries the inertia of what rests on it (D23, opt-in)",
 				   diagnostic(&btShockPropagationDiagnostics::m_slidingComposites), true, "composites"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",

@@ -188,6 +188,12 @@ struct btShockPropagationDiagnostics
 	/// energy than before or than its motion without the support rows (D25 alone: before).
 	bool m_rigidSlidingComposites = true;
 
+	/// D30, as a share of |g| dt^2 (unitless): how far from the face below a box corner may be, either
+	/// side, and still be kept as a contact point by m_keepBoxFaceCorners (27 micrometres at
+	/// 9.81 m/s^2 and 60 Hz; the corners Bullet's box-box test dropped under a sliding stack were
+	/// 6 micrometres out at most, docs/design.md, D30).
+	btScalar m_boxFaceReachPerFall = btScalar(0.01);
+
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
 	/// 9.81 m/s^2 and 60 Hz, ten times the convergence speed m_weightConvergence), and the largest
 	/// velocity change across the support that the load handed down to a composite's base may make
@@ -315,6 +321,17 @@ struct btShockPropagationSettings
 	/// world's m_numIterations. A load past a support's edge takes more sweeps to settle than a
 	/// carried one: at 10, the guard held BenchmarkDemo's leaning columns up (D16, measured).
 	int m_weightIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
+
+	/// D30: in a stacked group, a box resting face down on another box keeps the corners of its
+	/// face that lie on the other face (within m_diagnostics.m_boxFaceReachPerFall |g| dt^2) as
+	/// contact points, where Bullet's box-box test reported only some of them (it keeps only
+	/// corners that penetrate; a resting face's corners sit at micrometres, either side). While a
+	/// pair's points persist this adds nothing; once a box slides farther per step than its
+	/// manifold's breaking threshold (1.5 cm for a 1 m box) every point is new every step and on
+	/// about every other step one edge was missing, so the box pivoted and threw what it carried
+	/// off. Off: a pushed stack of 5 ends 13-26 cm apart where it must slide as one (1 cm);
+	/// on: 0.02-0.96 cm (docs/design.md, D30). Groups without stacks keep Bullet's points.
+	bool m_keepBoxFaceCorners = true;
 
 	/// Ablation switches and guard scales (see btShockPropagationDiagnostics); leave as they are
 	/// unless reproducing docs/design.md.

@@ -33,6 +33,7 @@ struct btShockPropagationStatistics
 	int m_numSharedFactorTransfers = 0;///< load transfers solved with their support block's factor (D24)
 	int m_numTippingComposites = 0;///< bodies that tipped (D25) or slid (D29) with what rests on them as one rigid body
 	int m_numRigidSlidingComposites = 0;///< of those, bodies that slid with what rests on them (D29)
+	int m_numBoxFaceCorners = 0;  ///< contact points added where a box face rested on a box (D30)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).
