@@ -309,7 +309,7 @@ def plot_truth(rows, out_dir):
                     rotation=30 if near == 0 else 0, color=color)
     ax.set_xscale("log")
     log_ticks(ax.xaxis)
-    ax.set_ylim(-0.5, len(cases) + 0.8)
+    ax.set_ylim(-0.5, len(cases) + 1.8)
     ax.set_yticks(range(len(cases) + 1))
     ax.set_xlabel("mean ms per step over the cases (log)")
     ax.set_ylabel(f"truths passed (of {len(cases)})")
