@@ -188,10 +188,11 @@ struct btShockPropagationDiagnostics
 	/// energy than before or than its motion without the support rows (D25 alone: before).
 	bool m_rigidSlidingComposites = true;
 
-	/// D30, as a share of |g| dt^2 (unitless): how far from the face below a box corner may be, either
-	/// side, and still be kept as a contact point by m_keepBoxFaceCorners (27 micrometres at
-	/// 9.81 m/s^2 and 60 Hz; the corners Bullet's box-box test dropped under a sliding stack were
-	/// 6 micrometres out at most, docs/design.md, D30).
+	/// D30, as a share of |g| dt^2 (unitless): how far outside the face below a box corner may be and
+	/// still be kept as a contact point by m_keepBoxFaceCorners (27 micrometres at 9.81 m/s^2 and
+	/// 60 Hz; the corners Bullet's box-box test dropped under a sliding stack were 6 micrometres out
+	/// at most, docs/design.md, D30). Inside the face a corner is kept down to the manifold's
+	/// breaking threshold.
 	btScalar m_boxFaceReachPerFall = btScalar(0.01);
 
 	/// D23, as a share of |g| dt (unitless): the slip speed of a sliding support (1 cm/s at
@@ -323,8 +324,8 @@ struct btShockPropagationSettings
 	int m_weightIterations = BT_SHOCK_ITERATIONS_FROM_WORLD;
 
 	/// D30: in a stacked group, a box resting face down on another box keeps the corners of its
-	/// face that lie on the other face (within m_diagnostics.m_boxFaceReachPerFall |g| dt^2) as
-	/// contact points, where Bullet's box-box test reported only some of them (it keeps only
+	/// face that lie on the other face (at most m_diagnostics.m_boxFaceReachPerFall |g| dt^2
+	/// outside it, or inside it) as contact points, where Bullet's box-box test reported only some of them (it keeps only
 	/// corners that penetrate; a resting face's corners sit at micrometres, either side). While a
 	/// pair's points persist this adds nothing; once a box slides farther per step than its
 	/// manifold's breaking threshold (1.5 cm for a 1 m box) every point is new every step and on
