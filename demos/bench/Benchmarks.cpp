@@ -87,6 +87,7 @@ struct PhaseSums
 	int steps = 0;
 	double total = 0;  ///< the whole step (ratio mode only; Google Benchmark times Step itself)
 	double collision = 0, graph = 0, setup = 0, global = 0, layers = 0, weightFeeling = 0, correction = 0;
+	double globalSweeps = 0, layerSweeps = 0, weightSweeps = 0;  ///< PGS sweeps of each pass (counts, summed over the step's groups)
 
 	/// Adds the last step of `sim` (its statistics describe that step).
 	void add(harness::Simulation& sim)
@@ -102,6 +103,9 @@ struct PhaseSums
 			layers += st.m_timeLayersMs;
 			weightFeeling += st.m_timeWeightFeelingMs;
 			correction += st.m_timeCorrectionMs;
+			globalSweeps += st.m_numGlobalSweeps;
+			layerSweeps += st.m_numLayerSweeps;
+			weightSweeps += st.m_numWeightSweeps;
 		}
 	}
 	double perStep(double sum) const { return steps > 0 ? sum / steps : 0; }
@@ -293,7 +297,8 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 					sps / si, fixed(r.siDrift * 100, 1).c_str(), fixed(r.spDrift * 100, 1).c_str(), fixed(r.spSolverDrift * 100, 1).c_str());
 	}
 	std::printf("\nper-phase ms per step (coll: Bullet's collision detection, every call; the rest from btShockPropagationStatistics)\n");
-	std::printf("%-24s %-10s %8s %8s %8s %8s %8s %8s %8s %8s\n", "scene", "solver", "step", "coll", "graph", "setup", "global", "layers", "wf", "corr");
+	std::printf("%-24s %-10s %8s %8s %8s %8s %8s %8s %8s %8s   %s\n", "scene", "solver", "step", "coll", "graph", "setup", "global", "layers", "wf", "corr",
+				"sweeps per step global / layers / wf");
 	for (const RatioRow& r : rows)
 	{
 		const PhaseSums* sums[3] = {&r.si, &r.sp, &r.spSolver};
@@ -304,8 +309,9 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 			if (k == 0)
 				std::printf("%-24s %-10s %8.3f %8.3f %8s %8s %8s %8s %8s %8s\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision), "-", "-", "-", "-", "-", "-");
 			else
-				std::printf("%-24s %-10s %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision),
-							p.perStep(p.graph), p.perStep(p.setup), p.perStep(p.global), p.perStep(p.layers), p.perStep(p.weightFeeling), p.perStep(p.correction));
+				std::printf("%-24s %-10s %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f   %.1f / %.1f / %.1f\n", r.label.c_str(), names[k], p.perStep(p.total),
+							p.perStep(p.collision), p.perStep(p.graph), p.perStep(p.setup), p.perStep(p.global), p.perStep(p.layers), p.perStep(p.weightFeeling),
+							p.perStep(p.correction), p.perStep(p.globalSweeps), p.perStep(p.layerSweeps), p.perStep(p.weightSweeps));
 		}
 	}
 	std::fflush(stdout);

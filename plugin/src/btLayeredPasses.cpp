@@ -78,6 +78,14 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 	layerOf.resize(numContacts);
 	for (int i = 0; i < numContacts; ++i) layerOf[i] = clampLayer(contactRowLayer[i], m_numLayers);
 	bucket(m_numLayers, numContacts, numContacts ? &layerOf[0] : 0, m_contactStart, m_contactRows, m_scratchCursor);
+	m_pointCarried.resize(numContacts);
+	m_pointFelt.resize(numContacts);
+	for (int i = 0; i < numContacts; ++i)
+	{
+		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(pools.m_contacts[i].m_originalContactPoint);
+		m_pointCarried[i] = cp && cp->m_appliedImpulse > btScalar(0) ? 1 : 0;
+		m_pointFelt[i] = cp ? btWithheldReactions::feltShare(*cp) : btScalar(0);
+	}
 
 	// Friction and rolling friction rows follow their contact row (m_frictionIndex).
 	bucketFollowers(pools.m_frictions, layerOf, m_frictionStart, m_frictionRows);
@@ -400,8 +408,7 @@ void btLayeredPasses::withholdUnfeltWarmStart(const btSolverPools& pools, btScal
 			const bool fixA = m_fixated[c.m_solverBodyIdA] != 0;
 			const bool fixB = m_fixated[c.m_solverBodyIdB] != 0;
 			if (fixA == fixB) continue;
-			const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
-			const btScalar felt = btMin(warm, btMax(btScalar(0), warmstartingFactor * btWithheldReactions::feltShare(*cp)));
+			const btScalar felt = btMin(warm, btMax(btScalar(0), warmstartingFactor * m_pointFelt[rowIndex]));
 			const btScalar unfelt = (warm - felt) * (btScalar(1) - coupling);
 			if (!(unfelt > btScalar(0))) continue;
 			const int id = fixA ? c.m_solverBodyIdA : c.m_solverBodyIdB;
@@ -863,7 +870,10 @@ void btLayeredPasses::gatherSupportRows(int layer, const btSolverPools& pools)
 			bool sideA;
 			btSolverConstraint& c = pool[sorted[i]];
 			const int local = freeEnd(c, sideA);
-			if (local >= 0) m_transferRows[m_transferCursor[local]++] = btLoadTransferRow{&c, sideA, contact, i - start[layer]};
+			if (local < 0) continue;
+			const int point = contact ? sorted[i] : c.m_frictionIndex;
+			const bool carried = point >= 0 && point < m_pointCarried.size() && m_pointCarried[point];
+			m_transferRows[m_transferCursor[local]++] = btLoadTransferRow{&c, sideA, contact, i - start[layer], carried};
 		}
 	};
 	fillRows(pools.m_contacts, m_contactStart, m_contactRows, true);
@@ -1016,7 +1026,7 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 		// no resting load. Only points that replace or join persisting ones inherit. (Tested before
 		// the look-up: most pairs have no new point.)
 		if (fresh == 0 || fresh == m->getNumContacts()) continue;
-		const btPairLoad* found = findPairLoad(m);
+		const btPairLoad* found = findPairLoad(m, m_pairLoadCursor + i);
 		if (!found || found->m_body0 != m->getBody0() || found->m_body1 != m->getBody1()) continue;
 		const btScalar missing = found->m_total - totalNormalImpulse(*m);
 		if (!(missing > btScalar(0))) continue;
@@ -1042,6 +1052,7 @@ void btLayeredPasses::restorePairLoads(btPersistentManifold** manifolds, int num
 			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
 		}
 	}
+	m_pairLoadCursor += numManifolds;
 }
 
 void btLayeredPasses::recordPairLoads(btPersistentManifold** manifolds, int numManifolds)
@@ -1057,20 +1068,26 @@ void btLayeredPasses::endStep()
 {
 	m_pairLoadsLastStep.copyFromArray(m_pairLoadsThisStep);  // within the capacity: no allocation once settled
 	m_pairLoadsThisStep.resize(0);
-	m_pairLoadsSorted = false;  // sorted on the first look-up: a step whose pairs kept their points needs none
+	m_pairLoadsSorted = false;  // sorted on the first miss: a step whose groups kept their order needs none
+	m_pairLoadCursor = 0;
 }
 
-const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* manifold)
+const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* manifold, int hint)
 {
-	if (!m_pairLoadsSorted && m_pairLoadsLastStep.size() > 1)
-		m_pairLoadsLastStep.quickSort([](const btPairLoad& a, const btPairLoad& b) { return a.m_manifold < b.m_manifold; });
-	m_pairLoadsSorted = true;
-	int low = 0, high = m_pairLoadsLastStep.size() - 1;
+	if (hint >= 0 && hint < m_pairLoadsLastStep.size() && m_pairLoadsLastStep[hint].m_manifold == manifold) return &m_pairLoadsLastStep[hint];
+	if (!m_pairLoadsSorted)
+	{
+		m_pairLoadsByManifold.copyFromArray(m_pairLoadsLastStep);
+		if (m_pairLoadsByManifold.size() > 1)
+			m_pairLoadsByManifold.quickSort([](const btPairLoad& a, const btPairLoad& b) { return a.m_manifold < b.m_manifold; });
+		m_pairLoadsSorted = true;
+	}
+	int low = 0, high = m_pairLoadsByManifold.size() - 1;
 	while (low <= high)
 	{
 		const int mid = (low + high) / 2;
-		const void* key = m_pairLoadsLastStep[mid].m_manifold;
-		if (key == manifold) return &m_pairLoadsLastStep[mid];
+		const void* key = m_pairLoadsByManifold[mid].m_manifold;
+		if (key == manifold) return &m_pairLoadsByManifold[mid];
 		if (key < manifold) low = mid + 1;
 		else high = mid - 1;
 	}

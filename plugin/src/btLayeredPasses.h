@@ -325,8 +325,13 @@ private:
 	// D18: this step's records (appended per group) and last step's (sorted by manifold on the first look-up).
 	// Arrays keep their capacity, so a settled world's steps allocate nothing.
 	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
-	const btPairLoad* findPairLoad(const void* manifold);
+	/// Last step's load of the pair, or 0. hint: the manifold's place in this step's order of
+	/// look-ups (groups and their manifolds in turn), where a step like the last finds it at once;
+	/// elsewhere a copy sorted by manifold (made once per step, on the first miss) is searched.
+	const btPairLoad* findPairLoad(const void* manifold, int hint);
+	btAlignedObjectArray<btPairLoad> m_pairLoadsByManifold;
 	bool m_pairLoadsSorted = false;
+	int m_pairLoadCursor = 0;  ///< manifolds of this step's earlier groups (restorePairLoads' hints)
 	// D24: per free-body slot, the factor its support block kept for the weight pass (valid: 1).
 	btAlignedObjectArray<btCholesky6> m_blockFactor;
 	btAlignedObjectArray<char> m_blockFactorValid;
@@ -363,6 +368,10 @@ private:
 	btAlignedObjectArray<int> m_discardedIds;  // the solver bodies given some this step (cleared at the pass's end)
 	int m_tippingComposites = 0;
 	btAlignedObjectArray<int> m_scratchLayer, m_scratchFollow, m_scratchCursor;  // build(), kept so steps do not allocate
+	// Per contact row, its point as the step began, read once in row order (build()): whether it
+	// carried impulse last step (the support block's rest test) and its felt share (D5).
+	btAlignedObjectArray<char> m_pointCarried;
+	btAlignedObjectArray<btScalar> m_pointFelt;
 	// D23: this group's composites (every layer's), their members (base first), the layer's active
 	// ones and per solver body the active composite (-1: none); per friction row its slip at setup.
 	btAlignedObjectArray<btSlidingComposite> m_composites;

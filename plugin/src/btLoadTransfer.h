@@ -41,6 +41,10 @@ struct btLoadTransferRow
 	bool m_sideA;  ///< the body is side A of the row
 	bool m_contact;  ///< contact normal (else friction, bounded by its contact row)
 	int m_position = -1;  ///< btLayeredPasses: the row's place among its layer's contact (or friction) rows
+	/// The row's contact point carried impulse last step (its btManifoldPoint::m_appliedImpulse > 0
+	/// as the step began). btLayeredPasses reads the points once, in row order, so the support block
+	/// does not reach into the manifolds body by body.
+	bool m_carried = false;
 };
 
 /// A row's Jacobian on the body it transfers to (J_b) and on its other end (J_o).

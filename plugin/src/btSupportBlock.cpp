@@ -36,8 +36,9 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 	if (!(btFabs(invInertia.determinant()) > SIMD_EPSILON)) return false;
 
 	// The resting rows, their errors e (m/s) and the normal equations A = J^T J, J^T e.
-	btScalar A[6][6] = {};
-	btScalar Je[6] = {};
+	btVector3 linearLinear[3], angularLinear[3], angularAngular[3];
+	for (int r = 0; r < 3; ++r) linearLinear[r] = angularLinear[r] = angularAngular[r] = btVector3(0, 0, 0);
+	btVector3 JeLinear(0, 0, 0), JeAngular(0, 0, 0);
 	bool use[kMaxBlockRows];
 	btScalar error[kMaxBlockRows];
 	int used = 0;
@@ -55,25 +56,40 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		if (!(contact->m_appliedImpulse > btScalar(0))) continue;  // not in contact
 		// A contact pushing now that carried nothing last step is an impact or a new load: the
 		// body is not at rest, and its block is PGS's.
-		const btManifoldPoint* point = static_cast<const btManifoldPoint*>(contact->m_originalContactPoint);
-		if (!point || !(point->m_appliedImpulse > btScalar(0))) return false;
+		if (!rows[i].m_carried) return false;
 		const btRowSides s = btSidesOf(rows[i]);
 		const btSolverBody& other = bodies[rows[i].m_sideA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
 		// What Bullet's kernel would turn into an impulse, in velocity units (Bullet's delta
 		// accessors are not const).
 		const btScalar e = btSupportRowError(rows[i], body, const_cast<btSolverBody&>(other));
 		if (!(e == e)) continue;
-		const btScalar j[6] = {s.m_linear[0], s.m_linear[1], s.m_linear[2], s.m_angular[0], s.m_angular[1], s.m_angular[2]};
-		for (int a = 0; a < 6; ++a)
+		// J^T e and J^T J by 3 x 3 blocks (each entry sums the same products in the same order as
+		// entry by entry would; the upper triangle is filled too and never read).
+		const btVector3& l = s.m_linear;
+		const btVector3& w = s.m_angular;
+		JeLinear += l * e;
+		JeAngular += w * e;
+		for (int r = 0; r < 3; ++r)
 		{
-			Je[a] += j[a] * e;
-			for (int b = 0; b <= a; ++b) A[a][b] += j[a] * j[b];
+			linearLinear[r] += l * l[r];
+			angularLinear[r] += l * w[r];
+			angularAngular[r] += w * w[r];
 		}
 		use[i] = true;
 		error[i] = e;
 		++used;
 	}
-	if (used < 6) return false;  // the factorisation reads the lower triangle only
+	if (used < 6) return false;
+	btScalar A[6][6];
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 3; ++c)
+		{
+			A[r][c] = linearLinear[r][c];
+			A[3 + r][c] = angularLinear[r][c];
+			A[3 + r][3 + c] = angularAngular[r][c];
+			A[c][3 + r] = angularLinear[r][c];
+		}
+	const btScalar Je[6] = {JeLinear[0], JeLinear[1], JeLinear[2], JeAngular[0], JeAngular[1], JeAngular[2]};
 	btCholesky6 cholesky;  // Jacobi-scaled: metres and radians weigh alike
 	if (!cholesky.factor(A, btScalar(0), btScalar(1e-3), true)) return false;
 	// D24: kept for the weight pass's load transfer when it covers the transfer's rows (all of them).
