@@ -322,7 +322,7 @@ private:
 		const void* m_body1;
 		btScalar m_total;
 	};
-	// D18: this step's records (appended per group) and last step's (sorted by manifold on the first look-up).
+	// D18: this step's records (appended per group) and last step's, in last step's order (findPairLoad sorts a copy on its first miss).
 	// Arrays keep their capacity, so a settled world's steps allocate nothing.
 	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
 	/// Last step's load of the pair, or 0. hint: the manifold's place in this step's order of

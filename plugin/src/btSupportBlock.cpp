@@ -16,7 +16,6 @@ subject to the following restrictions:
 
 #include "btCholesky6.h"
 
-#include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
 namespace
