@@ -66,16 +66,16 @@ btScalar velocityAlong(const btSolverBody& body, const btVector3& linearAxis, co
 /// pushes R at most at the common normal velocity of an inelastic collision of the two,
 /// (a_F w_R + a_R w_F) / (w_F + w_R) with w = J W J^T of each side. A support heavier than its
 /// load is unaffected; a light fixated body no longer throws a heavy one at its own speed.
+/// hidden: the fixated end's hiddenVelocity for this row.
 btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLinear, const btVector3& fixatedAngular,
 						 const btVector3& fixatedAngularComponent, const btSolverBody& free, const btVector3& freeLinear,
-						 const btVector3& freeAngular, const btVector3& freeAngularComponent, const btVector3& contactNormal,
+						 const btVector3& freeAngular, const btVector3& freeAngularComponent, btScalar hidden,
 						 btShockPropagationFixationMode mode)
 {
 	if (!fixated.m_originalBody || !free.m_originalBody || mode == BT_FIXATION_ZERO_VELOCITY) return btScalar(0);
 	// Velocities as the row sees them: set up with u + u_ext (gravity), swept with the deltas;
 	// the fixated end as its mode shows it.
-	const btScalar approach = -(velocityAlong(fixated, fixatedLinear, fixatedAngular) -
-								hiddenVelocity(fixated, fixatedLinear, fixatedAngular, BT_ROW_CONTACT, contactNormal, mode));
+	const btScalar approach = -(velocityAlong(fixated, fixatedLinear, fixatedAngular) - hidden);
 	const btScalar away = velocityAlong(free, freeLinear, freeAngular);
 	const btScalar wF = sideInverseMass(fixated, fixatedLinear, fixatedAngular, fixatedAngularComponent);
 	const btScalar wR = sideInverseMass(free, freeLinear, freeAngular, freeAngularComponent);
@@ -84,20 +84,6 @@ btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLi
 	return approach - common;
 }
 }  // namespace
-
-btFixationBackup btBackupRow(const btSolverConstraint& row)
-{
-	return btFixationBackup{row.m_jacDiagABInv, row.m_rhs, row.m_cfm, row.m_angularComponentA, row.m_angularComponentB};
-}
-
-void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup)
-{
-	row.m_jacDiagABInv = backup.m_jacDiagABInv;
-	row.m_rhs = backup.m_rhs;
-	row.m_cfm = backup.m_cfm;
-	row.m_angularComponentA = backup.m_angularComponentA;
-	row.m_angularComponentB = backup.m_angularComponentB;
-}
 
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
 					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal)
@@ -111,19 +97,22 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	// rel_vel = J_A u_A + J_B u_B enters the error with a minus sign (joints weighted by damping).
 	const btScalar weight = kind == BT_ROW_JOINT ? params.m_jointDamping : btScalar(1);
 
+	// What each fixated end's mode hides (D1), computed once: D14 reads it too.
+	const btScalar hiddenA = fixA ? hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params.m_mode) : btScalar(0);
+	const btScalar hiddenB = fixB ? hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params.m_mode) : btScalar(0);
 	if (params.m_inelasticFixation && kind == BT_ROW_CONTACT && fixA != fixB)
 	{
 		// D14, before the fixated side's angular component is zeroed below (it holds W_F J_F^T).
 		error -= fixA ? inelasticExcess(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, bodyB,
-										row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, contactNormal, params.m_mode)
+										row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, hiddenA, params.m_mode)
 					  : inelasticExcess(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, row.m_angularComponentB, bodyA,
-										row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, contactNormal, params.m_mode);
+										row.m_contactNormal1, row.m_relpos1CrossNormal, row.m_angularComponentA, hiddenB, params.m_mode);
 	}
 
 	btScalar denominator = cfm;
 	if (fixA)
 	{
-		error += weight * hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params.m_mode);
+		error += weight * hiddenA;
 		row.m_angularComponentA.setZero();
 	}
 	else
@@ -132,7 +121,7 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	}
 	if (fixB)
 	{
-		error += weight * hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params.m_mode);
+		error += weight * hiddenB;
 		row.m_angularComponentB.setZero();
 	}
 	else

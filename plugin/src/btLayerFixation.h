@@ -63,8 +63,19 @@ struct btFixationBackup
 	btVector3 m_angularComponentB;
 };
 
-btFixationBackup btBackupRow(const btSolverConstraint& row);
-void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup);
+inline btFixationBackup btBackupRow(const btSolverConstraint& row)
+{
+	return btFixationBackup{row.m_jacDiagABInv, row.m_rhs, row.m_cfm, row.m_angularComponentA, row.m_angularComponentB};
+}
+
+inline void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup)
+{
+	row.m_jacDiagABInv = backup.m_jacDiagABInv;
+	row.m_rhs = backup.m_rhs;
+	row.m_cfm = backup.m_cfm;
+	row.m_angularComponentA = backup.m_angularComponentA;
+	row.m_angularComponentB = backup.m_angularComponentB;
+}
 
 /// Re-derive one row with side A (fixA) or side B fixated. The bodies hold their current
 /// velocities (call before the fixated body's inverse mass is zeroed). contactNormal: the normal
