@@ -31,13 +31,6 @@ void btWithheldReactions::reset(int numNodes, int numContactRows)
 	}
 }
 
-void btWithheldReactions::add(int node, const btVector3& linear, const btVector3& angular)
-{
-	m_linear[node] += linear;
-	m_angular[node] += angular;
-	m_has[node] = 1;
-}
-
 void btWithheldReactions::deliver(int node, btSolverBody& body)
 {
 	const btRigidBody* rb = body.m_originalBody;

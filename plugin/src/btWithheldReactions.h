@@ -34,7 +34,12 @@ class btWithheldReactions
 public:
 	void reset(int numNodes, int numContactRows);
 	/// Withhold the impulse (linear, angular; world frame) from node.
-	void add(int node, const btVector3& linear, const btVector3& angular);
+	void add(int node, const btVector3& linear, const btVector3& angular)
+	{
+		m_linear[node] += linear;
+		m_angular[node] += angular;
+		m_has[node] = 1;
+	}
 	bool has(int node) const { return m_has[node] != 0; }
 	/// Apply node's withheld impulse to its solver body (as a velocity change) and forget it.
 	void deliver(int node, btSolverBody& body);
