@@ -27,5 +27,5 @@ nice -n 10 "$build/demos/truth/bsp_truth" --csv "$results/truth.csv" --md "$resu
 /usr/bin/python3 "$root/demos/charts/plot_charts.py" "$results" "$root/demos/charts/images"
 # The raw results docs/measurements.md's readings come from, kept next to the charts.
 mkdir -p "$root/demos/charts/results"
-cp "$results"/scaling.* "$results"/towers.* "$results"/truth.* "$results"/headline.txt "$root/demos/charts/results/"
+cp "$results"/scaling.* "$results"/towers.* "$results"/truth.* "$results"/headline.txt "$results"/cheapest.md "$root/demos/charts/results/"
 for part in "$results"/pareto-*; do cp "$part/pareto.csv" "$root/demos/charts/results/$(basename "$part").csv"; cp "$part/pareto.json" "$root/demos/charts/results/$(basename "$part").json"; done
