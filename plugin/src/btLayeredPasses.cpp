@@ -1305,15 +1305,9 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 		m_tipOf.resize(bodies.size());
 		for (int i = 0; i < bodies.size(); ++i) m_tipOf[i] = 0;
 	}
-	const auto eligible = [&](int body) -> const btRigidBody* {
-		const btSolverBody& b = bodies[body];
-		const btRigidBody* rb = b.m_originalBody;
-		if (!rb || !(rb->getInvMass() > btScalar(0)) || inJoint(body)) return 0;
-		if (b.m_linearFactor != btVector3(1, 1, 1) || b.m_angularFactor != btVector3(1, 1, 1)) return 0;
-		return rb;
-	};
-	const btRigidBody* baseBody = eligible(id);
-	if (!baseBody || m_tipOf[id] != 0 || m_nodeOfSolverBody[id] < 0) return false;
+	if (!m_rowsOfBodyBuilt) buildRowsOfBody(pools);
+	if (!m_tipEligible[id] || m_tipOf[id] != 0 || m_nodeOfSolverBody[id] < 0) return false;
+	const btRigidBody* baseBody = bodies[id].m_originalBody;
 	const btVector3 g = baseBody->getGravity();
 	if (!(g.length2() > SIMD_EPSILON)) return false;
 	const btVector3 up = -g.normalized();
@@ -1329,7 +1323,6 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 	m_tipOf[id] = mark;
 	// The rows above the layer in order (by layer, then Bullet's order), each looked at once, and
 	// only if it touches a member: a member's rows are queued from the position where it joined.
-	if (!m_rowsOfBodyBuilt) buildRowsOfBody(pools);
 	const int aboveBegin = m_contactStart[btMin(layer + 1, m_numLayers)];
 	btAlignedObjectArray<int>& queue = m_tipQueue;
 	queue.resize(0);
@@ -1351,14 +1344,13 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 		queue.pop_back();
 		if (r == previous) continue;  // queued by both its bodies
 		previous = r;
-		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
-		const int a = row.m_solverBodyIdA, b = row.m_solverBodyIdB;
+		const int a = m_rowEnds[2 * r], b = m_rowEnds[2 * r + 1];
 		const bool inA = m_tipOf[a] == mark, inB = m_tipOf[b] == mark;
 		if (inA == inB) continue;
 		const int lower = inA ? a : b, upper = inA ? b : a;
 		const int upperNode = m_nodeOfSolverBody[upper], lowerNode = m_nodeOfSolverBody[lower];
 		if (upperNode < 0 || lowerNode < 0 || m_layers->getHeight(upperNode) <= m_layers->getHeight(lowerNode)) continue;
-		if (!restsOn(row, upper) || !eligible(upper)) continue;
+		if (!m_tipEligible[upper] || !restsOn(pools.m_contacts[m_contactRows[r]], upper)) continue;
 		if (m_tipOf[upper] != 0)
 		{
 			clash = true;  // it rests on another tipping body too
@@ -1415,11 +1407,22 @@ void btLayeredPasses::buildRowsOfBody(const btSolverPools& pools)
 	btAlignedObjectArray<int>& cursor = m_scratchCursor;
 	cursor.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i) cursor[i] = m_rowsOfBodyStart[i];
+	m_rowEnds.resize(2 * numPositions);
 	for (int r = 0; r < numPositions; ++r)  // ascending, so each body's positions are too
 	{
 		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
 		m_rowsOfBody[cursor[row.m_solverBodyIdA]++] = r;
 		if (row.m_solverBodyIdB != row.m_solverBodyIdA) m_rowsOfBody[cursor[row.m_solverBodyIdB]++] = r;
+		m_rowEnds[2 * r] = row.m_solverBodyIdA;
+		m_rowEnds[2 * r + 1] = row.m_solverBodyIdB;
+	}
+	m_tipEligible.resize(numBodies);
+	for (int i = 0; i < numBodies; ++i)
+	{
+		const btSolverBody& b = pools.m_bodies[i];
+		const btRigidBody* rb = b.m_originalBody;
+		m_tipEligible[i] = rb && rb->getInvMass() > btScalar(0) && !inJoint(i) && b.m_linearFactor == btVector3(1, 1, 1) &&
+						   b.m_angularFactor == btVector3(1, 1, 1);
 	}
 	m_rowsOfBodyBuilt = true;
 }

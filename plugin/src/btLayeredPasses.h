@@ -358,6 +358,11 @@ private:
 	template <class Visit>
 	void visitBodyRows(int id, int layer, const btSolverPools& pools, Visit visit);
 	btAlignedObjectArray<int> m_rowsOfBodyStart, m_rowsOfBody, m_tipQueue;
+	/// With m_rowsOfBody: the two solver bodies of each contact position (2 r: side A, 2 r + 1: B),
+	/// and per solver body whether it may join a tipping composite (a dynamic body, in no joint,
+	/// with unit linear and angular factors), so the composite's walk reads no row or body it skips.
+	btAlignedObjectArray<int> m_rowEnds;
+	btAlignedObjectArray<char> m_tipEligible;
 	bool m_rowsOfBodyBuilt = false;
 	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected
 	btAlignedObjectArray<int> m_rejectedComponents;
