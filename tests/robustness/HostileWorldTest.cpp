@@ -236,6 +236,9 @@ TEST(HostileWorld, AnUnconvergedReSolveCannotSpinALightBodyUp)
 		runSeed(solver, clean, seed, broken, overBound, extremes);
 		std::printf("seed %u, D28 %s: largest speed / cap %.3g\n", seed, spin ? "on" : "off", extremes.speedOverCap);
 		EXPECT_TRUE(broken.empty());
-		if (spin) EXPECT_LT(extremes.speedOverCap, 2.0) << "the fastest healthy body against the speed cap";
+		if (spin)
+		{
+			EXPECT_LT(extremes.speedOverCap, 2.0) << "the fastest healthy body against the speed cap";
+		}
 	}
 }
