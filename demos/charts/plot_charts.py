@@ -340,6 +340,18 @@ def plugin_qualifies(r, passing):
     return r["solver"] == PLUGIN_DEFAULT and ("sp", r["iterations"]) in passing
 
 
+def scene_cheapest(pareto, scene, is_plugin):
+    """For one scene: the runs that held it, the cheapest plugin run among them (is_plugin picks which
+    plugin runs count), the cheapest stock run among them, and the costliest stock run tried (held or
+    not; nan if none ran): the lower bound on stock's cost where no stock run holds."""
+    mine = [r for r in pareto if r["scene"] == scene and r["status"] == "standing"]
+    best_sp = min((r for r in mine if is_plugin(r)), key=lambda r: num(r["ms_per_step"]), default=None)
+    best_stock = min((r for r in mine if r["family"] in STOCK), key=lambda r: num(r["ms_per_step"]), default=None)
+    tried = [num(r["ms_per_step"]) for r in pareto if r["scene"] == scene and r["family"] in STOCK]
+    costliest = max((t for t in tried if not math.isnan(t)), default=math.nan)
+    return mine, best_sp, best_stock, costliest
+
+
 def cheapest_table(pareto, truth):
     """Markdown: per scene, the cheapest plugin run that holds (within 1 cm for 10 s) and passes the truth
     suite, and per stock family the cheapest run that holds, with its cost over the plugin's."""
@@ -351,8 +363,7 @@ def cheapest_table(pareto, truth):
     lines = ["| scene | plugin (truths passed, holds) | " + " | ".join(STOCK) + " | cheapest stock / plugin |",
              "|---|---|" + "---|" * (len(STOCK) + 1)]
     for scene in scenes:
-        mine = [r for r in pareto if r["scene"] == scene and r["status"] == "standing"]
-        sp = min((r for r in mine if plugin_qualifies(r, passing)), key=lambda r: num(r["ms_per_step"]), default=None)
+        mine, sp, best_stock, costliest = scene_cheapest(pareto, scene, lambda r: plugin_qualifies(r, passing))
         cells = [scene, f"{sp['iterations']} it, {num(sp['ms_per_step']):.3g} ms" if sp else "none"]
         for family in STOCK:
             best = min((r for r in mine if r["family"] == family), key=lambda r: num(r["ms_per_step"]), default=None)
@@ -366,15 +377,12 @@ def cheapest_table(pareto, truth):
             cells.append(text)
         # The cheapest stock run that holds over the plugin's; where none holds, the costliest stock run
         # tried (which does not hold) over the plugin's is a lower bound.
-        stock = [num(r["ms_per_step"]) for r in mine if r["family"] in STOCK]
-        tried = [num(r["ms_per_step"]) for r in pareto if r["scene"] == scene and r["family"] in STOCK]
-        tried = [t for t in tried if not math.isnan(t)]
         if not sp:
             cells.append("-")
-        elif stock:
-            cells.append(f"{min(stock) / num(sp['ms_per_step']):.1f}x")
+        elif best_stock:
+            cells.append(f"{num(best_stock['ms_per_step']) / num(sp['ms_per_step']):.1f}x")
         else:
-            cells.append(f"> {max(tried, default=math.nan) / num(sp['ms_per_step']):.1f}x (none holds)")
+            cells.append(f"> {costliest / num(sp['ms_per_step']):.1f}x (none holds)")
         lines.append("| " + " | ".join(cells) + " |")
     return lines
 
@@ -383,13 +391,10 @@ def headline(pareto, scaling, truth):
     lines = []
     passing = truth_passing(truth)
     for scene in ("wall", "round_tower", "pyramid_30"):
-        mine = [r for r in pareto if r["scene"] == scene and r["status"] == "standing"]
         # Issue 16: the plugin's configuration must also pass the truth suite (f = 0, say, holds stacks
         # but fails truths); without truth results every plugin run counts.
-        sp = [r for r in mine if r["family"] == "sp" and (not passing or plugin_qualifies(r, passing))]
-        stock = [r for r in mine if r["family"] in STOCK]
-        best_sp = min(sp, key=lambda r: num(r["ms_per_step"]), default=None)
-        best_stock = min(stock, key=lambda r: num(r["ms_per_step"]), default=None)
+        _, best_sp, best_stock, costliest = scene_cheapest(
+            pareto, scene, lambda r: r["family"] == "sp" and (not passing or plugin_qualifies(r, passing)))
 
         def describe(r):
             return f"{r['solver']} it={r['iterations']} {num(r['ms_per_step']):.3f} ms/step" if r else "none"
@@ -399,8 +404,6 @@ def headline(pareto, scaling, truth):
             verdict = f"stock/plugin = {ratio:.2f}x (target >= 10x: {'met' if ratio >= 10 else 'not met'})"
         elif best_sp:
             # No stock configuration holds: stock needs more than the costliest one tried.
-            tried = [num(r["ms_per_step"]) for r in pareto if r["scene"] == scene and r["family"] in STOCK]
-            costliest = max((t for t in tried if not math.isnan(t)), default=math.nan)
             ratio = costliest / num(best_sp["ms_per_step"])
             verdict = (f"stock/plugin > {ratio:.1f}x (no stock configuration holds; the costliest tried, "
                        f"{costliest:.3f} ms/step, does not) (target >= 10x: {'met' if ratio >= 10 else 'not shown'})")
