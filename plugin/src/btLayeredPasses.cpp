@@ -515,6 +515,8 @@ int btLayeredPasses::solveWeightPass(int sweeps, const btLayerFixationParams& pa
 			++total;
 			if (lastChange <= converged2) break;
 		}
+		// D31: the sweeps' last error, a spurious turn of each body, removed by its support block.
+		if (weight.m_finalBlocks) solveSupportRows(k, pools, BT_SUPPORT_BLOCK);
 		// D16 guard. A load handed down cannot push a body faster than the bodies that pressed it
 		// on it moved towards it (an inelastic push), plus the slack. A re-solve that leaves a
 		// free body's centre of mass faster than that could not carry its load within its sweeps,

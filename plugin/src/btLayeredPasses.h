@@ -36,6 +36,7 @@ struct btWeightPassParams
 	btScalar m_tipGain = 1;           ///< a converged re-solve may speed a body that tips or slides up by this share of |g| dt
 	btScalar m_tipMargin = 0;         ///< share of the support's size the load must act outside of to tip it
 	bool m_transferSmallLoads = true; ///< D20: loads below m_convergedSpeed are transferred, not re-solved
+	bool m_finalBlocks = false;       ///< D31: a re-solve ends with its free bodies' support blocks (D19's solve)
 	/// D23, m/s: a sliding base's composite holds in the weight pass while the load handed to it
 	/// across its support changes its velocity by at most this (else it is re-solved alone)
 	btScalar m_compositeTolerance = 0;

@@ -299,6 +299,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 		weight.m_tipMargin = m_settings.m_diagnostics.m_weightGuardTipMargin;
 		weight.m_convergedSpeed = convergedSpeed;
 		weight.m_transferSmallLoads = m_settings.m_diagnostics.m_transferSmallLoads;
+		weight.m_finalBlocks = m_settings.m_diagnostics.m_weightPassBlocks && m_settings.m_diagnostics.m_supportBlocks;
 		weight.m_compositeTolerance = composites ? compositeSlip : btScalar(0);
 		weight.m_tippingComposites = m_settings.m_diagnostics.m_tippingComposites;
 		weight.m_rejectPerIsland = m_settings.m_diagnostics.m_rejectPerIsland;

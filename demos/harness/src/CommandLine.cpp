@@ -166,6 +166,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipMargin), "tipmargin", [](double m) { return m >= 0; }, ">= 0"),
 		switchFlag("--no-support-blocks", "plugin: no support block solve before a layer's sweeps (D19 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
+		switchFlag("--no-weight-blocks", "plugin: a weight-pass re-solve ends after its sweeps, without its support blocks (D31 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_weightPassBlocks), false, "noweightblocks"),
 		switchFlag("--own-transfer-factor", "plugin: the load transfer factors its own normal equations instead of using the support block's (D24 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_sharedBlockFactor), false, "ownfactor"),
 		numberFlag("--layer-min-sweeps", "N,...", "plugin: fewest sweeps per layer before a converged layer ends, -1 = always the app's N (default 2; D19)",

@@ -115,6 +115,15 @@ struct btShockPropagationDiagnostics
 	/// float (0.78 s) and creeps in double (measured in docs/design.md, D19).
 	bool m_supportBlocks = true;
 
+	/// D31: a weight-pass re-solve ends with the same block solve (D19) of each free body's
+	/// support rows, after its sweeps. Its sweeps stop once one changes no row's velocity by more
+	/// than the convergence speed, which leaves PGS's error (the rows swept last exact, the others
+	/// not) as a small spurious turn of each body; nothing restores an orientation error below the
+	/// correction's slop, and in tall pyramids the next steps turned it into more (the 2-D pyramid
+	/// of base 80 moved at 0.87 s, base 140 at 0.68 s; with the block base 80 stands to 4.9 s and
+	/// base 140 for 3 s; measured in docs/design.md, D31). Needs m_supportBlocks.
+	bool m_weightPassBlocks = true;
+
 	/// D24: the weight pass's load transfer (D16) of a body solves with the factor its support
 	/// block (D19) made of the same rows this step (every row in the block) instead of forming and
 	/// factoring its own: one 6 x 6 factorisation per body and step where there were two. The same
