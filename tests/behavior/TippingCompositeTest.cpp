@@ -138,8 +138,8 @@ TEST(ImpactTipping, WithoutItTheLandingsAreStoppedFlatAndTheColumnTipsLate)
 	// on it) carries part of that momentum through the landing bodies that slip, so it is off here
 	// too (with D29 alone the column reaches half height at 4.03 s, 8% late; without both 5.08 s).
 	// So is D31 (a weight-pass re-solve ends with its support blocks): in double, with D27 and D29
-	// off but D31 on, the re-solve under the hinge passes the guard often enough that the column
-	// reaches half height at 3.93 s (8% late; without all three 5.03 s; in float 5.08 s either way).
+	// off but D31 on, the column reaches half height at 3.93 s (8% late; without all three 5.03 s;
+	// in float 5.08 s either way): D31 carries part of the landing's momentum too.
 	const double expected = referenceHalfHeightTime();
 	harness::SolverSpec without = spec::shock();
 	without.settings.m_diagnostics.m_impactTipping = false;
