@@ -30,8 +30,8 @@ btScalar sideInverseMass(const btSolverBody& body, const btVector3& linearAxis, 
 /// J u of the part of a fixated side's motion that the mode hides from the layer above (D1).
 /// Bullet set the row up with u + u_ext (external impulse: gravity; friction rows leave out the
 /// torque); the sweeps add J (delta u) from the solver body.
-btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
-						const btVector3& contactNormal, btShockPropagationFixationMode mode)
+btScalar modeHiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
+							const btVector3& contactNormal, btShockPropagationFixationMode mode)
 {
 	if (!body.m_originalBody || mode == BT_FIXATION_KEEP_VELOCITY) return btScalar(0);
 	if (mode == BT_FIXATION_KEEP_LINEAR_AND_TWIST && kind == BT_ROW_JOINT) return btScalar(0);
@@ -51,6 +51,29 @@ btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, c
 	if (mode == BT_FIXATION_KEEP_LINEAR_VELOCITY) return angular;
 	const btScalar linear = linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse);
 	return linear + angular;
+}
+
+/// J u of the whole motion of a fixated side as the row was set up and swept (what zero-velocity
+/// fixation hides).
+btScalar fullVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind)
+{
+	if (!body.m_originalBody) return btScalar(0);
+	btSolverBody& state = const_cast<btSolverBody&>(body);  // Bullet's delta accessors are not const
+	btVector3 omega = body.m_angularVelocity + state.internalGetDeltaAngularVelocity();
+	if (kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT) omega += body.m_externalTorqueImpulse;
+	return linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse) + angularAxis.dot(omega);
+}
+
+/// What the layer above does not see of a fixated side: the mode's hidden part (D1), or all of
+/// it where what the mode shows along a contact row is slower than the rest speed (D32: within
+/// the solve's error, so at rest).
+btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
+						const btVector3& contactNormal, const btLayerFixationParams& params)
+{
+	const btScalar hidden = modeHiddenVelocity(body, linearAxis, angularAxis, kind, contactNormal, params.m_mode);
+	if (!(params.m_restSpeed > btScalar(0)) || kind == BT_ROW_JOINT || params.m_mode == BT_FIXATION_ZERO_VELOCITY) return hidden;
+	const btScalar full = fullVelocity(body, linearAxis, angularAxis, kind);
+	return btFabs(full - hidden) < params.m_restSpeed ? full : hidden;
 }
 /// J u of one end of a contact row as the sweeps see it: velocity, this step's external impulse
 /// (gravity, torque) and the deltas of the solve so far.
@@ -97,9 +120,9 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	// rel_vel = J_A u_A + J_B u_B enters the error with a minus sign (joints weighted by damping).
 	const btScalar weight = kind == BT_ROW_JOINT ? params.m_jointDamping : btScalar(1);
 
-	// What each fixated end's mode hides (D1), computed once: D14 reads it too.
-	const btScalar hiddenA = fixA ? hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params.m_mode) : btScalar(0);
-	const btScalar hiddenB = fixB ? hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params.m_mode) : btScalar(0);
+	// What each fixated end's mode hides (D1, D32), computed once: D14 reads it too.
+	const btScalar hiddenA = fixA ? hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params) : btScalar(0);
+	const btScalar hiddenB = fixB ? hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params) : btScalar(0);
 	if (params.m_inelasticFixation && kind == BT_ROW_CONTACT && fixA != fixB)
 	{
 		// D14, before the fixated side's angular component is zeroed below (it holds W_F J_F^T).

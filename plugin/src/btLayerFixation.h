@@ -51,6 +51,9 @@ struct btLayerFixationParams
 	/// D14: a fixated end approaching the free end of a contact pushes it at most at the common
 	/// velocity of an inelastic collision of the two (btShockPropagationSettings::m_inelasticFixation).
 	bool m_inelasticFixation = true;
+	/// D32 (m/s): a fixated end whose shown motion along a contact, friction or rolling row is
+	/// slower than this shows none (the convergence speed; 0: every motion is shown).
+	btScalar m_restSpeed = btScalar(0);
 };
 
 /// What btFixateSolverRow changes, to undo it.

@@ -272,6 +272,7 @@ void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo&
 	params.m_sor = info.m_sor;
 	params.m_jointDamping = info.m_damping;
 	params.m_inelasticFixation = m_settings.m_diagnostics.m_inelasticFixation;
+	params.m_restSpeed = m_settings.m_diagnostics.m_fixationRestSpeed ? convergedSpeed : btScalar(0);
 	const bool weightFeeling = m_settings.m_weightFeeling;
 	// Joints with more iterations than the app's (btTypedConstraint::setOverrideNumSolverIterations)
 	// get them, as in a stock solve: their rows are in layer 0.

@@ -111,3 +111,59 @@ TEST(BodyFixation, ZeroVelocityModeAlsoHoldsTowerOf20)
 	run.run(10.0);
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
+
+TEST(BodyFixation, ASupportSlowerThanTheRestSpeedShowsNoMotion)
+{
+	// D32 (docs/design.md, section 3): along a contact row, a fixated support whose shown motion
+	// (D1: linear velocity and spin about the normal) is slower than the rest speed is fixated as
+	// at rest (as zero-velocity fixation would); faster, it shows that motion as before.
+	harness::Trial run(spec::shock(), "tower", {{"n", 3}});
+	run.run(spec::kTimeStepSeconds);
+	btRigidBody* top = run.scene().named("top");
+	btRigidBody* middle = run.bodies()[1];
+	RowBuilder builder;
+	builder.build(run.simulation().world());
+	const btScalar restSpeed = btScalar(1e-3);
+	int checked = 0;
+	for (int i = 0; i < builder.contactRows().size(); ++i)
+	{
+		btSolverConstraint& row = builder.contactRows()[i];
+		btSolverBody& a = builder.bodyPool()[row.m_solverBodyIdA];
+		btSolverBody& b = builder.bodyPool()[row.m_solverBodyIdB];
+		const bool fixA = a.m_originalBody == middle && b.m_originalBody == top;
+		const bool fixB = b.m_originalBody == middle && a.m_originalBody == top;
+		if (!fixA && !fixB) continue;
+		btSolverBody& support = fixA ? a : b;
+		const btVector3 normal = static_cast<const btManifoldPoint*>(row.m_originalContactPoint)->m_normalWorldOnB;
+		// The support moves along the normal only (no gravity impulse left, no spin): what it shows
+		// along this row is that speed.
+		support.m_externalForceImpulse.setZero();
+		support.m_externalTorqueImpulse.setZero();
+		support.m_angularVelocity.setZero();
+		const btSolverConstraint original = row;
+		auto fixated = [&](btScalar speed, btShockPropagationFixationMode mode, btScalar rest) {
+			support.m_linearVelocity = normal * speed;
+			btSolverConstraint copy = original;
+			btLayerFixationParams params;
+			params.m_mode = mode;
+			params.m_restSpeed = rest;
+			btFixateSolverRow(copy, BT_ROW_CONTACT, a, b, fixA, fixB, params, normal);
+			return copy.m_rhs;
+		};
+		for (btScalar share : {btScalar(0.5), btScalar(2)})
+		{
+			const btScalar speed = share * restSpeed;
+			const btScalar withRest = fixated(speed, BT_FIXATION_KEEP_LINEAR_AND_TWIST, restSpeed);
+			const btScalar atRest = fixated(speed, BT_FIXATION_ZERO_VELOCITY, 0);
+			const btScalar shown = fixated(speed, BT_FIXATION_KEEP_LINEAR_AND_TWIST, 0);
+			// The two fixations differ by the shown speed times the row's effective mass.
+			ASSERT_GT(std::fabs(shown - atRest), 0.4 * speed * original.m_jacDiagABInv);
+			if (share < 1)
+				EXPECT_EQ(withRest, atRest) << "a support slower than the rest speed is at rest";
+			else
+				EXPECT_EQ(withRest, shown) << "a support faster than the rest speed shows its motion";
+		}
+		++checked;
+	}
+	EXPECT_GE(checked, 3) << "expected the top box's contact rows on the middle box";
+}

@@ -168,6 +168,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
 		switchFlag("--no-weight-blocks", "plugin: a weight-pass re-solve ends after its sweeps, without its support blocks (D31 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightPassBlocks), false, "noweightblocks"),
+		switchFlag("--no-fixation-rest-speed", "plugin: a fixated support shows the layer above even motion slower than the convergence speed (D32 off)",
+				   diagnostic(&btShockPropagationDiagnostics::m_fixationRestSpeed), false, "norestspeed"),
 		switchFlag("--own-transfer-factor", "plugin: the load transfer factors its own normal equations instead of using the support block's (D24 off)",
 				   diagnostic(&btShockPropagationDiagnostics::m_sharedBlockFactor), false, "ownfactor"),
 		numberFlag("--layer-min-sweeps", "N,...", "plugin: fewest sweeps per layer before a converged layer ends, -1 = always the app's N (default 2; D19)",

@@ -124,6 +124,15 @@ struct btShockPropagationDiagnostics
 	/// base 140 for 3 s; measured in docs/design.md, D31). Needs m_supportBlocks.
 	bool m_weightPassBlocks = true;
 
+	/// D32: a fixated body's motion along a contact row (what its fixation mode shows the layer
+	/// above, D1) is shown only if it is at least the convergence speed (m_weightConvergence |g| dt,
+	/// 0.98 mm/s at 9.81 m/s^2 and 60 Hz); slower, the row sees the support at rest. The sweeps end
+	/// once they change no row by more than that speed, so a support's motion below it is the
+	/// solve's error, and handed up it turned the pyramids' small tilts into an instability (the
+	/// 2-D pyramid of base 80 moved at 4.9 s, base 140 at 3 s; with this both stand 10 s at 5-20
+	/// iterations; measured in docs/design.md, D32). Joint rows always see the full motion.
+	bool m_fixationRestSpeed = true;
+
 	/// D24: the weight pass's load transfer (D16) of a body solves with the factor its support
 	/// block (D19) made of the same rows this step (every row in the block) instead of forming and
 	/// factoring its own: one 6 x 6 factorisation per body and step where there were two. The same
