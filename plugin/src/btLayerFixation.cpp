@@ -27,18 +27,26 @@ btScalar sideInverseMass(const btSolverBody& body, const btVector3& linearAxis, 
 	return rb->getInvMass() * linearAxis.length2() + angularAxis.dot(angularComponent);
 }
 
-/// J u of the part of a fixated side's motion that the mode hides from the layer above (D1).
-/// Bullet set the row up with u + u_ext (external impulse: gravity; friction rows leave out the
-/// torque); the sweeps add J (delta u) from the solver body.
-btScalar modeHiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
-							const btVector3& contactNormal, btShockPropagationFixationMode mode)
+/// A rigid motion of a solver body: linear and angular velocity.
+struct btBodyMotion
 {
-	if (!body.m_originalBody || mode == BT_FIXATION_KEEP_VELOCITY) return btScalar(0);
+	btVector3 m_linear;
+	btVector3 m_angular;
+};
+
+/// J u of a motion of one side of a row.
+btScalar along(const btBodyMotion& motion, const btVector3& linearAxis, const btVector3& angularAxis)
+{
+	return linearAxis.dot(motion.m_linear) + angularAxis.dot(motion.m_angular);
+}
+
+/// J u of the part of a fixated side's motion u that the mode hides from the layer above (D1).
+btScalar modeHidden(const btBodyMotion& motion, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
+					const btVector3& contactNormal, btShockPropagationFixationMode mode)
+{
+	if (mode == BT_FIXATION_KEEP_VELOCITY) return btScalar(0);
 	if (mode == BT_FIXATION_KEEP_LINEAR_AND_TWIST && kind == BT_ROW_JOINT) return btScalar(0);
-	btSolverBody& state = const_cast<btSolverBody&>(body);  // Bullet's delta accessors are not const
-	const bool withTorque = kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT;
-	btVector3 omega = body.m_angularVelocity + state.internalGetDeltaAngularVelocity();
-	if (withTorque) omega += body.m_externalTorqueImpulse;
+	btVector3 omega = motion.m_angular;
 	if (mode == BT_FIXATION_KEEP_LINEAR_AND_TWIST)
 	{
 		// Keep the spin about the contact normal (it moves the upper body along, as a turntable
@@ -49,32 +57,28 @@ btScalar modeHiddenVelocity(const btSolverBody& body, const btVector3& linearAxi
 	}
 	const btScalar angular = angularAxis.dot(omega);
 	if (mode == BT_FIXATION_KEEP_LINEAR_VELOCITY) return angular;
-	const btScalar linear = linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse);
-	return linear + angular;
+	return linearAxis.dot(motion.m_linear) + angular;
 }
 
-/// J u of the whole motion of a fixated side as the row was set up and swept (what zero-velocity
-/// fixation hides).
-btScalar fullVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind)
-{
-	if (!body.m_originalBody) return btScalar(0);
-	btSolverBody& state = const_cast<btSolverBody&>(body);  // Bullet's delta accessors are not const
-	btVector3 omega = body.m_angularVelocity + state.internalGetDeltaAngularVelocity();
-	if (kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT) omega += body.m_externalTorqueImpulse;
-	return linearAxis.dot(body.m_linearVelocity + state.internalGetDeltaLinearVelocity() + body.m_externalForceImpulse) + angularAxis.dot(omega);
-}
-
-/// What the layer above does not see of a fixated side: the mode's hidden part (D1), or all of
-/// it where what the mode shows along a contact row is slower than the rest speed (D32: within
-/// the solve's error, so at rest).
+/// J u of what the layer above does not see of a fixated side. Bullet set the row up with
+/// u + u_ext (external impulse: gravity; friction rows leave out the torque); the sweeps add
+/// delta u from the solver body. The mode hides its part (D1). D32: along a contact, friction or
+/// rolling row, a support that nothing drives (no joint, no kinematic body touching it) and whose
+/// shown motion is slower than the rest speed shows none: that motion is the solve's error.
 btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
-						const btVector3& contactNormal, const btLayerFixationParams& params)
+						const btVector3& contactNormal, const btLayerFixationParams& params, bool driven)
 {
-	const btScalar hidden = modeHiddenVelocity(body, linearAxis, angularAxis, kind, contactNormal, params.m_mode);
-	if (!(params.m_restSpeed > btScalar(0)) || kind == BT_ROW_JOINT || params.m_mode == BT_FIXATION_ZERO_VELOCITY) return hidden;
-	const btScalar full = fullVelocity(body, linearAxis, angularAxis, kind);
+	if (!body.m_originalBody) return btScalar(0);  // Bullet's shared fixed body: static
+	btSolverBody& state = const_cast<btSolverBody&>(body);  // Bullet's delta accessors are not const
+	btBodyMotion motion{body.m_linearVelocity + body.m_externalForceImpulse + state.internalGetDeltaLinearVelocity(),
+						body.m_angularVelocity + state.internalGetDeltaAngularVelocity()};
+	if (kind == BT_ROW_CONTACT || kind == BT_ROW_JOINT) motion.m_angular += body.m_externalTorqueImpulse;
+	const btScalar hidden = modeHidden(motion, linearAxis, angularAxis, kind, contactNormal, params.m_mode);
+	if (driven || !(params.m_restSpeed > btScalar(0)) || kind == BT_ROW_JOINT || params.m_mode == BT_FIXATION_ZERO_VELOCITY) return hidden;
+	const btScalar full = along(motion, linearAxis, angularAxis);
 	return btFabs(full - hidden) < params.m_restSpeed ? full : hidden;
 }
+
 /// J u of one end of a contact row as the sweeps see it: velocity, this step's external impulse
 /// (gravity, torque) and the deltas of the solve so far.
 btScalar velocityAlong(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis)
@@ -109,7 +113,7 @@ btScalar inelasticExcess(const btSolverBody& fixated, const btVector3& fixatedLi
 }  // namespace
 
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
-					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal)
+					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal, bool drivenA, bool drivenB)
 {
 	if (!fixA && !fixB) return;
 	const btScalar jacOld = row.m_jacDiagABInv;
@@ -121,8 +125,8 @@ void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSo
 	const btScalar weight = kind == BT_ROW_JOINT ? params.m_jointDamping : btScalar(1);
 
 	// What each fixated end's mode hides (D1, D32), computed once: D14 reads it too.
-	const btScalar hiddenA = fixA ? hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params) : btScalar(0);
-	const btScalar hiddenB = fixB ? hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params) : btScalar(0);
+	const btScalar hiddenA = fixA ? hiddenVelocity(bodyA, row.m_contactNormal1, row.m_relpos1CrossNormal, kind, contactNormal, params, drivenA) : btScalar(0);
+	const btScalar hiddenB = fixB ? hiddenVelocity(bodyB, row.m_contactNormal2, row.m_relpos2CrossNormal, kind, contactNormal, params, drivenB) : btScalar(0);
 	if (params.m_inelasticFixation && kind == BT_ROW_CONTACT && fixA != fixB)
 	{
 		// D14, before the fixated side's angular component is zeroed below (it holds W_F J_F^T).

@@ -51,8 +51,9 @@ struct btLayerFixationParams
 	/// D14: a fixated end approaching the free end of a contact pushes it at most at the common
 	/// velocity of an inelastic collision of the two (btShockPropagationSettings::m_inelasticFixation).
 	bool m_inelasticFixation = true;
-	/// D32 (m/s): a fixated end whose shown motion along a contact, friction or rolling row is
-	/// slower than this shows none (the convergence speed; 0: every motion is shown).
+	/// D32 (m/s): a fixated end that nothing drives and whose shown motion along a contact,
+	/// friction or rolling row is slower than this shows none (the convergence speed; 0: every
+	/// motion is shown).
 	btScalar m_restSpeed = btScalar(0);
 };
 
@@ -83,7 +84,10 @@ inline void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup
 /// Re-derive one row with side A (fixA) or side B fixated. The bodies hold their current
 /// velocities (call before the fixated body's inverse mass is zeroed). contactNormal: the normal
 /// of the contact the row belongs to (contact, friction and rolling rows; zero for joints).
+/// drivenA/B: the side is in a joint or touches a kinematic body, so its slow motion is real and
+/// shown (D32 does not apply to it).
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
-					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal);
+					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal, bool drivenA = false,
+					   bool drivenB = false);
 
 #endif  // BT_SHOCK_PROPAGATION_LAYER_FIXATION_H

@@ -68,6 +68,68 @@ int clampLayer(int layer, int numLayers)
 }
 }  // namespace
 
+void btLayeredPasses::markDriven(const btSolverPools& pools)
+{
+	// D32: a body is driven if a joint holds it or a moving kinematic body touches it, and so is
+	// every body it touches, through contacts between dynamic bodies: their slow motion comes from
+	// the drive and is real. The rest of a group moves only by contacts and gravity.
+	const int numBodies = pools.m_bodies.size();
+	const int numContacts = pools.m_contacts.size();
+	m_driven.resize(numBodies);
+	m_drivenQueue.resize(0);
+	for (int i = 0; i < numBodies; ++i)
+	{
+		m_driven[i] = m_jointed[i];
+		if (m_driven[i]) m_drivenQueue.push_back(i);
+	}
+	auto movable = [&](int id) {
+		const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
+		return rb && rb->getInvMass() > btScalar(0);
+	};
+	auto movingKinematic = [&](int id) {
+		const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
+		return rb && rb->isKinematicObject() && (!rb->getLinearVelocity().fuzzyZero() || !rb->getAngularVelocity().fuzzyZero());
+	};
+	for (int i = 0; i < numContacts; ++i)
+	{
+		const int a = pools.m_contacts[i].m_solverBodyIdA;
+		const int b = pools.m_contacts[i].m_solverBodyIdB;
+		if (movingKinematic(a) && movable(b) && !m_driven[b]) m_driven[b] = 1, m_drivenQueue.push_back(b);
+		if (movingKinematic(b) && movable(a) && !m_driven[a]) m_driven[a] = 1, m_drivenQueue.push_back(a);
+	}
+	if (m_drivenQueue.size() == 0) return;  // the usual case: nothing drives the group
+	// Contacts of each body (both ends), bucketed.
+	m_drivenStart.resize(numBodies + 1);
+	for (int i = 0; i <= numBodies; ++i) m_drivenStart[i] = 0;
+	for (int i = 0; i < numContacts; ++i)
+	{
+		++m_drivenStart[pools.m_contacts[i].m_solverBodyIdA + 1];
+		++m_drivenStart[pools.m_contacts[i].m_solverBodyIdB + 1];
+	}
+	for (int i = 0; i < numBodies; ++i) m_drivenStart[i + 1] += m_drivenStart[i];
+	m_drivenAdjacent.resize(m_drivenStart[numBodies]);
+	m_scratchCursor.resize(numBodies);
+	for (int i = 0; i < numBodies; ++i) m_scratchCursor[i] = m_drivenStart[i];
+	for (int i = 0; i < numContacts; ++i)
+	{
+		const int a = pools.m_contacts[i].m_solverBodyIdA;
+		const int b = pools.m_contacts[i].m_solverBodyIdB;
+		m_drivenAdjacent[m_scratchCursor[a]++] = b;
+		m_drivenAdjacent[m_scratchCursor[b]++] = a;
+	}
+	for (int head = 0; head < m_drivenQueue.size(); ++head)
+	{
+		const int id = m_drivenQueue[head];
+		for (int k = m_drivenStart[id]; k < m_drivenStart[id + 1]; ++k)
+		{
+			const int other = m_drivenAdjacent[k];
+			if (m_driven[other] || !movable(other)) continue;
+			m_driven[other] = 1;
+			m_drivenQueue.push_back(other);
+		}
+	}
+}
+
 void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectArray<int>& contactRowLayer,
 							const btAlignedObjectArray<int>& solverBodyOfNode, const btSolverPools& pools)
 {
@@ -134,6 +196,7 @@ void btLayeredPasses::build(const btStackLayers& layers, const btAlignedObjectAr
 		if (c.m_solverBodyIdA >= 0 && c.m_solverBodyIdA < m_jointed.size()) m_jointed[c.m_solverBodyIdA] = 1;
 		if (c.m_solverBodyIdB >= 0 && c.m_solverBodyIdB < m_jointed.size()) m_jointed[c.m_solverBodyIdB] = 1;
 	}
+	markDriven(pools);
 	m_transferRows.resize(0);
 	m_rowsOfBodyBuilt = false;
 	m_composites.resize(0);
@@ -235,7 +298,8 @@ void btLayeredPasses::fixate(int layer, const btLayerFixationParams& params, con
 			const btSolverConstraint& contact = pools.m_contacts[row.m_frictionIndex];
 			normal = contact.m_contactNormal1.isZero() ? contact.m_contactNormal2 : contact.m_contactNormal1;
 		}
-		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params, normal);
+		btFixateSolverRow(row, kind, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB], fixA, fixB, params, normal,
+						  driven(row.m_solverBodyIdA), driven(row.m_solverBodyIdB));
 		if (compA >= 0 || compB >= 0)
 			btCompositeFrictionRow(row, pools.m_bodies[row.m_solverBodyIdA], pools.m_bodies[row.m_solverBodyIdB],
 								   compA >= 0 ? m_composites[compA].m_massRatio : btScalar(1), compB >= 0 ? m_composites[compB].m_massRatio : btScalar(1),

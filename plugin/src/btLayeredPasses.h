@@ -241,6 +241,15 @@ private:
 	/// counts a constraint ref (a disabled joint has no rows but keeps its ref). Built in build().
 	btAlignedObjectArray<char> m_jointed;
 	bool inJoint(int id) const { return id >= 0 && id < m_jointed.size() && m_jointed[id]; }
+	/// D32, per solver body: something drives it (a joint holds it, a moving kinematic body
+	/// touches it, or it touches a driven body), so its motion is shown to the layer above however
+	/// slow. Built in build() by markDriven().
+	btAlignedObjectArray<char> m_driven;
+	btAlignedObjectArray<int> m_drivenQueue;
+	btAlignedObjectArray<int> m_drivenStart;
+	btAlignedObjectArray<int> m_drivenAdjacent;
+	void markDriven(const btSolverPools& pools);
+	bool driven(int id) const { return id >= 0 && id < m_driven.size() && m_driven[id]; }
 	int m_rigidSlidingComposites = 0;     ///< D29 composites kept this step
 	/// D16/D26: which free bodies of the layer a rejection restores (m_rejectLocal): with perIsland
 	/// those in the rejected bodies' islands (components of the contact graph); else all of them.

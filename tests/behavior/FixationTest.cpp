@@ -114,9 +114,9 @@ TEST(BodyFixation, ZeroVelocityModeAlsoHoldsTowerOf20)
 
 TEST(BodyFixation, ASupportSlowerThanTheRestSpeedShowsNoMotion)
 {
-	// D32 (docs/design.md, section 3): along a contact row, a fixated support whose shown motion
-	// (D1: linear velocity and spin about the normal) is slower than the rest speed is fixated as
-	// at rest (as zero-velocity fixation would); faster, it shows that motion as before.
+	// D32 (docs/design.md, section 4t): along a contact row, a fixated support that nothing drives
+	// and whose shown motion (D1: linear velocity and spin about the normal) is slower than the rest
+	// speed is fixated as at rest (as zero-velocity fixation would); faster, it shows that motion.
 	harness::Trial run(spec::shock(), "tower", {{"n", 3}});
 	run.run(spec::kTimeStepSeconds);
 	btRigidBody* top = run.scene().named("top");
@@ -141,13 +141,13 @@ TEST(BodyFixation, ASupportSlowerThanTheRestSpeedShowsNoMotion)
 		support.m_externalTorqueImpulse.setZero();
 		support.m_angularVelocity.setZero();
 		const btSolverConstraint original = row;
-		auto fixated = [&](btScalar speed, btShockPropagationFixationMode mode, btScalar rest) {
+		auto fixated = [&](btScalar speed, btShockPropagationFixationMode mode, btScalar rest, bool driven = false) {
 			support.m_linearVelocity = normal * speed;
 			btSolverConstraint copy = original;
 			btLayerFixationParams params;
 			params.m_mode = mode;
 			params.m_restSpeed = rest;
-			btFixateSolverRow(copy, BT_ROW_CONTACT, a, b, fixA, fixB, params, normal);
+			btFixateSolverRow(copy, BT_ROW_CONTACT, a, b, fixA, fixB, params, normal, fixA && driven, fixB && driven);
 			return copy.m_rhs;
 		};
 		for (btScalar share : {btScalar(0.5), btScalar(2)})
@@ -158,6 +158,8 @@ TEST(BodyFixation, ASupportSlowerThanTheRestSpeedShowsNoMotion)
 			const btScalar shown = fixated(speed, BT_FIXATION_KEEP_LINEAR_AND_TWIST, 0);
 			// The two fixations differ by the shown speed times the row's effective mass.
 			ASSERT_GT(std::fabs(shown - atRest), 0.4 * speed * original.m_jacDiagABInv);
+			// A driven support (a joint, a moving kinematic body) shows its motion however slow.
+			EXPECT_EQ(fixated(speed, BT_FIXATION_KEEP_LINEAR_AND_TWIST, restSpeed, true), shown);
 			if (share < 1)
 				EXPECT_EQ(withRest, atRest) << "a support slower than the rest speed is at rest";
 			else

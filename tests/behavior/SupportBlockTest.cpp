@@ -33,21 +33,24 @@ TEST(SupportBlocks, RestingLayersConvergeInTheFewestSweeps)
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
-TEST(SupportBlocks, WithoutThemEarlyEndingLayersLetTheRoundTowerMove)
+TEST(SupportBlocks, WithoutThemEarlyEndingLayersLetTheTowerOf40Creep)
 {
 	// What the block is for: PGS alone converges slowly (rho^N), so a sweep that changes little is
-	// not a converged layer. Ended on that test without the block, the 320-brick round tower moves:
-	// measured over 10 s at 10 iterations, 1.7 cm (past 1 cm at 4.6 s) in float and 9.6 cm (7.1 s)
-	// in double; with the block (the default) 0.00 cm in both. (Before D32 the tower of 40 showed
-	// it too, falling at 0.78 s in float; with D32 it stands without the block.)
+	// not a converged layer. Ended on that test without the block, the tower of 40 creeps: measured
+	// over 10 s, it falls at 0.78 s in float and moves 5.8 mm in double; with the block (the default)
+	// it does not move (0.00 mm in both). D32 (a support's motion below the convergence speed is
+	// not handed up) hides this failure in the tower, so the ablation turns D32 off as well; without
+	// the block but with D32 the pyramid of base 30 still drifts 3.3 mm and the round tower moves
+	// (docs/design.md, section 4t).
 	harness::SolverSpec without = spec::shock();
 	without.settings.m_diagnostics.m_supportBlocks = false;
-	harness::Trial moving(without, "round_tower");
-	harness::Trial standing(spec::shock(), "round_tower");
-	moving.run(10.0);
+	without.settings.m_diagnostics.m_fixationRestSpeed = false;
+	harness::Trial creeping(without, "tower", {{"n", 40}});
+	harness::Trial standing(spec::shock(), "tower", {{"n", 40}});
+	creeping.run(10.0);
 	standing.run(10.0);
-	EXPECT_GT(moving.maxDrift(), harness::kStandingDriftMeters) << "m: expected the round tower to move without the support blocks";
-	EXPECT_LT(standing.maxDrift(), 0.001) << "m";
+	EXPECT_GT(creeping.maxDrift(), 0.002) << "m: expected the tower to creep without the support blocks";
+	EXPECT_LT(standing.maxDrift(), 0.0002) << "m";
 }
 
 TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
@@ -193,7 +196,7 @@ TEST(WeightPassBlocks, PyramidOfBase80StillStandsWhenSweepsAloneHaveTurnedItApar
 
 TEST(FixationRestSpeed, PyramidOfBase80StandsWhereShowingEverySupportMotionTurnsItApart)
 {
-	// D32 (docs/design.md, section 3): a fixated support's motion slower than the convergence
+	// D32 (docs/design.md, section 4t): a fixated support's motion slower than the convergence
 	// speed is the solve's error, and the layer above sees the support at rest. Shown to it, the
 	// error climbs the pyramid and grows: the pyramid of base 80 (3,240 boxes) moves past 1 cm at
 	// 1.87 s at 3 iterations in float, at 1.98 s at 10 in double (4.9 s at 10 in float). With

@@ -126,11 +126,13 @@ struct btShockPropagationDiagnostics
 
 	/// D32: a fixated body's motion along a contact row (what its fixation mode shows the layer
 	/// above, D1) is shown only if it is at least the convergence speed (m_weightConvergence |g| dt,
-	/// 0.98 mm/s at 9.81 m/s^2 and 60 Hz); slower, the row sees the support at rest. The sweeps end
-	/// once they change no row by more than that speed, so a support's motion below it is the
-	/// solve's error, and handed up it turned the pyramids' small tilts into an instability (the
-	/// 2-D pyramid of base 80 moved at 4.9 s, base 140 at 3 s; with this both stand 10 s at 5-20
-	/// iterations; measured in docs/design.md, D32). Joint rows always see the full motion.
+	/// 0.98 mm/s at 9.81 m/s^2 and 60 Hz) or something drives the body (a joint holds it, a moving
+	/// kinematic body touches it, or it touches a driven body); slower, the row sees the support at
+	/// rest. The sweeps end once they change no row by more than that speed, so an undriven
+	/// support's motion below it is the solve's error, and handed up it turned the pyramids' small
+	/// tilts into an instability (the 2-D pyramid of base 80 moved at 4.9 s at 10 iterations and
+	/// 1.9 s at 3; with this it stands 10 s at 3-20 iterations; measured in docs/design.md, D32).
+	/// Joint rows always see the full motion.
 	bool m_fixationRestSpeed = true;
 
 	/// D24: the weight pass's load transfer (D16) of a body solves with the factor its support
