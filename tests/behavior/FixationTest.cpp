@@ -45,6 +45,26 @@ public:
 	btConstraintArray& contactRows() { return m_tmpSolverContactConstraintPool; }
 };
 
+/// Calls visit(row, a, b, fixA, fixB) for each contact row between `upper` and the fixated `lower`
+/// (fixA: lower is the row's body A); returns how many there were.
+template <class Visit>
+int visitRowsOnFixated(RowBuilder& builder, const btRigidBody* upper, const btRigidBody* lower, Visit visit)
+{
+	int visited = 0;
+	for (int i = 0; i < builder.contactRows().size(); ++i)
+	{
+		btSolverConstraint& row = builder.contactRows()[i];
+		btSolverBody& a = builder.bodyPool()[row.m_solverBodyIdA];
+		btSolverBody& b = builder.bodyPool()[row.m_solverBodyIdB];
+		const bool fixA = a.m_originalBody == lower && b.m_originalBody == upper;
+		const bool fixB = b.m_originalBody == lower && a.m_originalBody == upper;
+		if (!fixA && !fixB) continue;
+		visit(row, a, b, fixA, fixB);
+		++visited;
+	}
+	return visited;
+}
+
 /// 1 / (J W J^T) of a contact row on one body: 1 / (1/m + (r x n) . I^-1 (r x n)).
 btScalar handEffectiveMass(const btRigidBody& body, const btVector3& point, const btVector3& normal)
 {
@@ -67,15 +87,7 @@ TEST(BodyFixation, RowEffectiveMassIsTheFreeBodysAloneByHandComputation)
 	RowBuilder builder;
 	builder.build(run.simulation().world());
 	btLayerFixationParams params;
-	int checked = 0;
-	for (int i = 0; i < builder.contactRows().size(); ++i)
-	{
-		btSolverConstraint& row = builder.contactRows()[i];
-		btSolverBody& a = builder.bodyPool()[row.m_solverBodyIdA];
-		btSolverBody& b = builder.bodyPool()[row.m_solverBodyIdB];
-		const bool fixA = a.m_originalBody == middle && b.m_originalBody == top;
-		const bool fixB = b.m_originalBody == middle && a.m_originalBody == top;
-		if (!fixA && !fixB) continue;
+	const int checked = visitRowsOnFixated(builder, top, middle, [&](btSolverConstraint& row, btSolverBody& a, btSolverBody& b, bool fixA, bool fixB) {
 		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
 		const btVector3 point = fixA ? cp->getPositionWorldOnB() : cp->getPositionWorldOnA();
 		const btScalar expected = handEffectiveMass(*top, point, cp->m_normalWorldOnB);
@@ -84,8 +96,7 @@ TEST(BodyFixation, RowEffectiveMassIsTheFreeBodysAloneByHandComputation)
 		EXPECT_NEAR(row.m_jacDiagABInv, expected, 1e-4 * expected);
 		EXPECT_GT(std::fabs(row.m_jacDiagABInv - before), 0.1 * expected) << "the row as set up counted both bodies";
 		EXPECT_TRUE((fixA ? row.m_angularComponentA : row.m_angularComponentB).isZero()) << "impulses must not turn the fixated body";
-		++checked;
-	}
+	});
 	EXPECT_GE(checked, 3) << "expected the top box's contact rows on the middle box";
 	// The fixated body itself was never changed.
 	EXPECT_EQ(middle->getInvMass(), middleInvMassBefore);
@@ -124,15 +135,7 @@ TEST(BodyFixation, ASupportSlowerThanTheRestSpeedShowsNoMotion)
 	RowBuilder builder;
 	builder.build(run.simulation().world());
 	const btScalar restSpeed = btScalar(1e-3);
-	int checked = 0;
-	for (int i = 0; i < builder.contactRows().size(); ++i)
-	{
-		btSolverConstraint& row = builder.contactRows()[i];
-		btSolverBody& a = builder.bodyPool()[row.m_solverBodyIdA];
-		btSolverBody& b = builder.bodyPool()[row.m_solverBodyIdB];
-		const bool fixA = a.m_originalBody == middle && b.m_originalBody == top;
-		const bool fixB = b.m_originalBody == middle && a.m_originalBody == top;
-		if (!fixA && !fixB) continue;
+	const int checked = visitRowsOnFixated(builder, top, middle, [&](btSolverConstraint& row, btSolverBody& a, btSolverBody& b, bool fixA, bool fixB) {
 		btSolverBody& support = fixA ? a : b;
 		const btVector3 normal = static_cast<const btManifoldPoint*>(row.m_originalContactPoint)->m_normalWorldOnB;
 		// The support moves along the normal only (no gravity impulse left, no spin): what it shows
@@ -165,7 +168,6 @@ TEST(BodyFixation, ASupportSlowerThanTheRestSpeedShowsNoMotion)
 			else
 				EXPECT_EQ(withRest, shown) << "a support faster than the rest speed shows its motion";
 		}
-		++checked;
-	}
+	});
 	EXPECT_GE(checked, 3) << "expected the top box's contact rows on the middle box";
 }
