@@ -75,17 +75,19 @@ void btLayeredPasses::markDriven(const btSolverPools& pools)
 	// the drive and is real. The rest of a group moves only by contacts and gravity.
 	const int numBodies = pools.m_bodies.size();
 	const int numContacts = pools.m_contacts.size();
-	m_driven.resize(numBodies);
-	m_drivenQueue.resize(0);
-	for (int i = 0; i < numBodies; ++i)
-	{
-		m_driven[i] = m_jointed[i];
-		if (m_driven[i]) m_drivenQueue.push_back(i);
-	}
 	auto movable = [&](int id) {
 		const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
 		return rb && rb->getInvMass() > btScalar(0);
 	};
+	m_driven.resize(numBodies);
+	m_drivenQueue.resize(0);
+	for (int i = 0; i < numBodies; ++i)
+	{
+		// Only dynamic bodies carry a drive on: a joint to the world also marks Bullet's shared
+		// fixed body, which touches everything resting on static ground.
+		m_driven[i] = m_jointed[i] && movable(i) ? 1 : 0;
+		if (m_driven[i]) m_drivenQueue.push_back(i);
+	}
 	auto movingKinematic = [&](int id) {
 		const btRigidBody* rb = pools.m_bodies[id].m_originalBody;
 		return rb && rb->isKinematicObject() && (!rb->getLinearVelocity().fuzzyZero() || !rb->getAngularVelocity().fuzzyZero());
