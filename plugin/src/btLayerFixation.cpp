@@ -63,8 +63,9 @@ btScalar modeHidden(const btBodyMotion& motion, const btVector3& linearAxis, con
 /// J u of what the layer above does not see of a fixated side. Bullet set the row up with
 /// u + u_ext (external impulse: gravity; friction rows leave out the torque); the sweeps add
 /// delta u from the solver body. The mode hides its part (D1). D32: along a contact, friction or
-/// rolling row, a support that nothing drives (no joint, no kinematic body touching it) and whose
-/// shown motion is slower than the rest speed shows none: that motion is the solve's error.
+/// rolling row, a support that nothing drives (no joint or moving kinematic body, directly or
+/// through contacts) and whose shown motion is slower than the rest speed shows none: that motion
+/// is the solve's error.
 btScalar hiddenVelocity(const btSolverBody& body, const btVector3& linearAxis, const btVector3& angularAxis, btSolverRowKind kind,
 						const btVector3& contactNormal, const btLayerFixationParams& params, bool driven)
 {

@@ -84,8 +84,8 @@ inline void btRestoreRow(btSolverConstraint& row, const btFixationBackup& backup
 /// Re-derive one row with side A (fixA) or side B fixated. The bodies hold their current
 /// velocities (call before the fixated body's inverse mass is zeroed). contactNormal: the normal
 /// of the contact the row belongs to (contact, friction and rolling rows; zero for joints).
-/// drivenA/B: the side is in a joint or touches a kinematic body, so its slow motion is real and
-/// shown (D32 does not apply to it).
+/// drivenA/B: a joint or a moving kinematic body drives the side, directly or through contacts
+/// (btLayeredPasses::markDriven), so its slow motion is real and shown (D32 does not apply).
 void btFixateSolverRow(btSolverConstraint& row, btSolverRowKind kind, const btSolverBody& bodyA, const btSolverBody& bodyB,
 					   bool fixA, bool fixB, const btLayerFixationParams& params, const btVector3& contactNormal, bool drivenA = false,
 					   bool drivenB = false);
