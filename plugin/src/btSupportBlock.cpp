@@ -62,31 +62,34 @@ bool btSolveSupportBlock(btSolverBody& body, const btAlignedObjectArray<btSolver
 		// accessors are not const).
 		const btScalar e = btSupportRowError(rows[i], body, const_cast<btSolverBody&>(other));
 		if (!(e == e)) continue;
-		// J^T e and J^T J by 3 x 3 blocks (each entry sums the same products in the same order as
-		// entry by entry would; the upper triangle is filled too and never read).
+		// J^T e and the lower triangle of J^T J by 3 x 3 blocks (btCholesky6 reads no more; each
+		// entry sums the same products in the same order as entry by entry would).
 		const btVector3& l = s.m_linear;
 		const btVector3& w = s.m_angular;
 		JeLinear += l * e;
 		JeAngular += w * e;
 		for (int r = 0; r < 3; ++r)
 		{
-			linearLinear[r] += l * l[r];
+			for (int c = 0; c <= r; ++c)
+			{
+				linearLinear[r][c] += l[c] * l[r];
+				angularAngular[r][c] += w[c] * w[r];
+			}
 			angularLinear[r] += l * w[r];
-			angularAngular[r] += w * w[r];
 		}
 		use[i] = true;
 		error[i] = e;
 		++used;
 	}
 	if (used < 6) return false;
-	btScalar A[6][6];
+	btScalar A[6][6];  // lower triangle only: btCholesky6::factor reads no more
 	for (int r = 0; r < 3; ++r)
 		for (int c = 0; c < 3; ++c)
 		{
-			A[r][c] = linearLinear[r][c];
 			A[3 + r][c] = angularLinear[r][c];
+			if (c > r) continue;
+			A[r][c] = linearLinear[r][c];
 			A[3 + r][3 + c] = angularAngular[r][c];
-			A[c][3 + r] = angularLinear[r][c];
 		}
 	const btScalar Je[6] = {JeLinear[0], JeLinear[1], JeLinear[2], JeAngular[0], JeAngular[1], JeAngular[2]};
 	btCholesky6 cholesky;  // Jacobi-scaled: metres and radians weigh alike
