@@ -11,17 +11,20 @@
 //                            fast configuration that lets the scene fall shows it here.
 // Filter with --benchmark_filter, e.g. 'Step/wall/'.
 //
-// bsp_bench --ratios [--steps N] [--warmup N] [--scenes a,b,...]
+// bsp_bench --ratios [--steps N] [--warmup N] [--scenes a,b,...] [--classic] [plugin flags]
 //   The cost ratios of issue 16: plugin ms/step over stock SI ms/step, world mode (sp) and solver-only
 //   mode (sp-solver), on the registry's towers, pyramids, wall, round tower, a scene without stacks and
 //   the BenchmarkDemo ports, each at the scene's app iteration count. The three worlds are stepped in
 //   lockstep in one process (one step of each in turn, the order rotating every step), so machine noise
 //   hits all three alike. Timed over 2 s after 10 warm-up steps (towers, boxes_3000: 10 s); --steps sets every
-//   scene's count. Prints one table, then the per-phase split.
+//   scene's count. Prints one table, then the per-phase split. bsp_demo's plugin flags (one value
+//   each, e.g. --no-support-blocks) set both plugin worlds' settings, --classic runs Erleben's classic
+//   method (no weight feeling) in both: the price of a decision.
 #include <BulletShockPropagation/btContactGraph.h>
 #include <BulletShockPropagation/btShockPropagationConstraintSolver.h>
 #include <BulletShockPropagation/btShockPropagationSettings.h>
 #include <BulletShockPropagation/btStackLayers.h>
+#include <harness/CommandLine.h>
 #include <harness/Metrics.h>
 #include <harness/Trial.h>
 #include <scenes/Registry.h>
@@ -63,11 +66,18 @@ int appIterations(const scenes::SceneContent& scene)
 /// A registry scene under the named solver (bsp_demo's names) at the scene's app iteration count.
 /// The count is set on the world's solver info after the scene is built, as an app sets it; the
 /// plugin's sweep counts follow it.
-std::unique_ptr<harness::Trial> appTrial(const std::string& solver, const std::string& scene, const Overrides& overrides = {})
+std::unique_ptr<harness::Trial> appTrial(const std::string& solver, const std::string& scene, const Overrides& overrides = {},
+										 const btShockPropagationSettings& plugin = btShockPropagationSettings())
 {
 	harness::SolverSpec spec;
 	std::string error;
 	if (!harness::parseSolverKind(solver, spec, error)) throw std::invalid_argument(error);
+	if (spec.isPlugin())
+	{
+		const bool weightFeeling = spec.settings.m_weightFeeling;  // the kind's (sp-classic: off)
+		spec.settings = plugin;
+		spec.settings.m_weightFeeling = weightFeeling && plugin.m_weightFeeling;
+	}
 	std::unique_ptr<harness::Trial> trial(new harness::Trial(spec, scene, overrides));
 	trial->simulation().world().getSolverInfo().m_numIterations = appIterations(trial->scene());
 	return trial;
@@ -233,6 +243,10 @@ struct RatioOptions
 	int steps = 120;   ///< timed steps of each world (2 s at 60 Hz), unless the case says otherwise
 	bool stepsGiven = false;  ///< --steps given: it applies to every case
 	std::vector<std::string> only;  ///< labels or scene names to run (empty: all)
+	/// The plugin's settings for both plugin worlds: the defaults unless plugin flags were given
+	/// (one value each), to price a decision against the same stock steps.
+	btShockPropagationSettings plugin;
+	std::string pluginLabel;  ///< the non-default flags, as SolverSpec::label() names them
 };
 
 struct RatioRow
@@ -248,7 +262,7 @@ RatioRow measureRatio(const RatioCase& c, const RatioOptions& o)
 {
 	const char* names[3] = {"si", "sp", "sp-solver"};
 	std::unique_ptr<harness::Trial> trials[3];
-	for (int k = 0; k < 3; ++k) trials[k] = appTrial(names[k], c.scene, c.overrides);
+	for (int k = 0; k < 3; ++k) trials[k] = appTrial(names[k], c.scene, c.overrides, o.plugin);
 	RatioRow row;
 	row.label = c.label;
 	row.bodies = int(trials[0]->bodies().size());
@@ -288,6 +302,7 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 {
 	std::printf("plugin / stock SI ms per step, side by side (lockstep, %d warm-up + %d timed steps of each world unless the scene says otherwise, 60 Hz)\n",
 				o.warmup, o.steps);
+	if (!o.pluginLabel.empty()) std::printf("plugin flags:%s\n", o.pluginLabel.c_str());
 	std::printf("%-24s %7s %4s %10s %10s %7s %13s %7s   %s\n", "scene", "bodies", "it", "stock ms", "sp ms", "ratio", "sp-solver ms", "ratio",
 				"drift at end si / sp / sp-solver (cm)");
 	for (const RatioRow& r : rows)
@@ -328,11 +343,19 @@ int positiveInt(const std::string& text, const std::string& option)
 int runRatios(int argc, char** argv)
 {
 	RatioOptions o;
+	harness::PluginFlags flags;
+	bool classic = false;  // Erleben's classic method (no weight feeling) in both plugin worlds
 	for (int i = 1; i < argc; ++i)
 	{
 		const std::string arg = argv[i];
 		const bool hasValue = i + 1 < argc;
 		if (arg == "--ratios") continue;
+		if (flags.parse(argc, argv, i)) continue;
+		if (arg == "--classic")
+		{
+			classic = true;
+			continue;
+		}
 		if (arg == "--steps" && hasValue)
 		{
 			o.steps = positiveInt(argv[++i], arg);
@@ -346,9 +369,24 @@ int runRatios(int argc, char** argv)
 		}
 		else
 		{
-			std::cerr << "bsp_bench --ratios: unknown option '" << arg << "'; valid: --steps N, --warmup N, --scenes a,b,...\n";
+			std::cerr << "bsp_bench --ratios: unknown option '" << arg
+					  << "'; valid: --steps N, --warmup N, --scenes a,b,..., --classic and bsp_demo's plugin flags (one value each)\n";
 			return 2;
 		}
+	}
+	const std::vector<btShockPropagationSettings> variants = flags.expand();
+	if (variants.size() != 1)
+	{
+		std::cerr << "bsp_bench --ratios: give each plugin flag one value (got " << variants.size() << " combinations)\n";
+		return 2;
+	}
+	o.plugin = variants[0];
+	o.pluginLabel = harness::pluginSettingsLabel(o.plugin);
+	if (o.pluginLabel == harness::pluginSettingsLabel(btShockPropagationSettings())) o.pluginLabel.clear();
+	if (classic)
+	{
+		o.plugin.m_weightFeeling = false;
+		o.pluginLabel += " classic (no weight feeling)";
 	}
 	std::vector<RatioRow> rows;
 	for (const RatioCase& c : ratioCases())
