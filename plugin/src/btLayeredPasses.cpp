@@ -1394,13 +1394,17 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 	const int aboveBegin = m_contactStart[btMin(layer + 1, m_numLayers)];
 	btAlignedObjectArray<int>& queue = m_tipQueue;
 	queue.resize(0);
+	// Only the rows on which the other body is the higher one: a member can carry nothing through
+	// any other row (the walk would skip it).
 	const auto enqueueRows = [&](int body, int from) {
 		for (int p = m_rowsOfBodyStart[body]; p < m_rowsOfBodyStart[body + 1]; ++p)
-			if (m_rowsOfBody[p] >= from)
-			{
-				queue.push_back(m_rowsOfBody[p]);
-				std::push_heap(&queue[0], &queue[0] + queue.size(), std::greater<int>());
-			}
+		{
+			const int r = m_rowsOfBody[p];
+			const int upper = m_rowUpper[r];
+			if (r < from || upper < 0 || upper == body) continue;
+			queue.push_back(r);
+			std::push_heap(&queue[0], &queue[0] + queue.size(), std::greater<int>());
+		}
 	};
 	enqueueRows(id, aboveBegin);
 	bool clash = false;
@@ -1410,14 +1414,11 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 		std::pop_heap(&queue[0], &queue[0] + queue.size(), std::greater<int>());
 		const int r = queue[queue.size() - 1];
 		queue.pop_back();
-		if (r == previous) continue;  // queued by both its bodies
+		if (r == previous) continue;  // queued twice
 		previous = r;
-		const int a = m_rowEnds[2 * r], b = m_rowEnds[2 * r + 1];
-		const bool inA = m_tipOf[a] == mark, inB = m_tipOf[b] == mark;
-		if (inA == inB) continue;
-		const int lower = inA ? a : b, upper = inA ? b : a;
-		const int upperNode = m_nodeOfSolverBody[upper], lowerNode = m_nodeOfSolverBody[lower];
-		if (upperNode < 0 || lowerNode < 0 || m_layers->getHeight(upperNode) <= m_layers->getHeight(lowerNode)) continue;
+		// Queued by its lower body, a member: the higher one joins if it rests on it.
+		const int upper = m_rowUpper[r];
+		if (m_tipOf[upper] == mark) continue;  // already a member
 		if (!m_tipEligible[upper] || !restsOn(pools.m_contacts[m_contactRows[r]], upper)) continue;
 		if (m_tipOf[upper] != 0)
 		{
@@ -1475,14 +1476,15 @@ void btLayeredPasses::buildRowsOfBody(const btSolverPools& pools)
 	btAlignedObjectArray<int>& cursor = m_scratchCursor;
 	cursor.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i) cursor[i] = m_rowsOfBodyStart[i];
-	m_rowEnds.resize(2 * numPositions);
+	m_rowUpper.resize(numPositions);
 	for (int r = 0; r < numPositions; ++r)  // ascending, so each body's positions are too
 	{
 		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
 		m_rowsOfBody[cursor[row.m_solverBodyIdA]++] = r;
 		if (row.m_solverBodyIdB != row.m_solverBodyIdA) m_rowsOfBody[cursor[row.m_solverBodyIdB]++] = r;
-		m_rowEnds[2 * r] = row.m_solverBodyIdA;
-		m_rowEnds[2 * r + 1] = row.m_solverBodyIdB;
+		const int nodeA = m_nodeOfSolverBody[row.m_solverBodyIdA], nodeB = m_nodeOfSolverBody[row.m_solverBodyIdB];
+		const int heightA = nodeA < 0 ? -1 : m_layers->getHeight(nodeA), heightB = nodeB < 0 ? -1 : m_layers->getHeight(nodeB);
+		m_rowUpper[r] = (nodeA < 0 || nodeB < 0 || heightA == heightB) ? -1 : (heightA > heightB ? row.m_solverBodyIdA : row.m_solverBodyIdB);
 	}
 	m_tipEligible.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i)

@@ -368,10 +368,12 @@ private:
 	template <class Visit>
 	void visitBodyRows(int id, int layer, const btSolverPools& pools, Visit visit);
 	btAlignedObjectArray<int> m_rowsOfBodyStart, m_rowsOfBody, m_tipQueue;
-	/// With m_rowsOfBody: the two solver bodies of each contact position (2 r: side A, 2 r + 1: B),
-	/// and per solver body whether it may join a tipping composite (a dynamic body, in no joint,
-	/// with unit linear and angular factors), so the composite's walk reads no row or body it skips.
-	btAlignedObjectArray<int> m_rowEnds;
+	/// With m_rowsOfBody: the higher of the two solver bodies of each contact position (by stack
+	/// height; -1 where the heights are equal or an end is no graph node: no body can rest on the
+	/// other there), and per solver body whether it may join a tipping composite (a dynamic body,
+	/// in no joint, with unit linear and angular factors), so the composite's walk queues only the
+	/// rows that can add a member and reads no row or body it skips.
+	btAlignedObjectArray<int> m_rowUpper;
 	btAlignedObjectArray<char> m_tipEligible;
 	bool m_rowsOfBodyBuilt = false;
 	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected
