@@ -26,6 +26,7 @@ subject to the following restrictions:
 
 #include <algorithm>
 #include <functional>
+#include <cstdint>
 
 namespace
 {
@@ -273,7 +274,7 @@ void btLayeredPasses::visitBodyRows(int id, int layer, const btSolverPools& pool
 		const int r = m_rowsOfBody[p];
 		if (r < begin) continue;
 		if (r >= end) break;
-		visit(static_cast<const btSolverConstraint&>(pools.m_contacts[m_contactRows[r]]));
+		visit(static_cast<const btSolverConstraint&>(pools.m_contacts[m_contactRows[r]]), r);
 	}
 }
 
@@ -759,7 +760,7 @@ bool btLayeredPasses::membersStick(int first, int mark, btScalar slack, const bt
 		level.m_impulse = b.internalGetDeltaLinearVelocity() * level.m_mass;
 		level.m_normal.setZero();
 		level.m_mu = BT_LARGE_FLOAT;
-		visitBodyRows(member, level.m_height - 1, pools, [&](const btSolverConstraint& row) {
+		visitBodyRows(member, level.m_height - 1, pools, [&](const btSolverConstraint& row, int) {
 			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
 			if (m_tipOf[other] != mark) return;
 			level.m_normal += row.m_solverBodyIdA == member ? row.m_contactNormal1 : row.m_contactNormal2;
@@ -997,7 +998,7 @@ bool btLayeredPasses::loadOutsideSupport(int layer, int node, const btSolverPool
 	// The whole load of the contacts resting on it (the layer above), normal parts only: the
 	// friction PGS leaves between a body and its supports is not determined by statics (a
 	// squeeze), and would tip what carries it.
-	visitBodyRows(id, layer + 1, pools, [&](const btSolverConstraint& row) {
+	visitBodyRows(id, layer + 1, pools, [&](const btSolverConstraint& row, int) {
 		const btScalar lambda = row.m_appliedImpulse;
 		if (row.m_solverBodyIdA == id)
 		{
@@ -1025,7 +1026,7 @@ bool btLayeredPasses::lineOutsideSupport(int layer, int id, const btVector3& P, 
 	btPlaneSpace1(up, u, v);
 	m_hull.resize(0);
 	btScalar plane = SIMD_INFINITY;
-	visitBodyRows(id, layer, pools, [&](const btSolverConstraint& row) {
+	visitBodyRows(id, layer, pools, [&](const btSolverConstraint& row, int) {
 		const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(row.m_originalContactPoint);
 		if (!cp) return;
 		const btVector3 n = row.m_solverBodyIdA == id ? row.m_contactNormal1 : row.m_contactNormal2;
@@ -1077,7 +1078,7 @@ btVector3 btLayeredPasses::supportNormal(int layer, int id, const btVector3& gra
 	// The mean normal of the body's supports in this layer (pointing into the body); without any,
 	// against gravity.
 	btVector3 n(0, 0, 0);
-	visitBodyRows(id, layer, pools, [&](const btSolverConstraint& row) { n += row.m_solverBodyIdA == id ? row.m_contactNormal1 : row.m_contactNormal2; });
+	visitBodyRows(id, layer, pools, [&](const btSolverConstraint& row, int) { n += row.m_solverBodyIdA == id ? row.m_contactNormal1 : row.m_contactNormal2; });
 	if (!(n.length2() > SIMD_EPSILON)) n = -gravity;
 	if (!(n.length2() > SIMD_EPSILON)) return btVector3(0, 0, 0);
 	return n.normalized();
@@ -1136,30 +1137,42 @@ void btLayeredPasses::endStep()
 {
 	m_pairLoadsLastStep.copyFromArray(m_pairLoadsThisStep);  // within the capacity: no allocation once settled
 	m_pairLoadsThisStep.resize(0);
-	m_pairLoadsSorted = false;  // sorted on the first miss: a step whose groups kept their order needs none
+	m_pairLoadsIndexed = false;  // indexed on the first miss: a step whose groups kept their order needs none
 	m_pairLoadCursor = 0;
 }
 
 const btLayeredPasses::btPairLoad* btLayeredPasses::findPairLoad(const void* manifold, int hint)
 {
-	if (hint >= 0 && hint < m_pairLoadsLastStep.size() && m_pairLoadsLastStep[hint].m_manifold == manifold) return &m_pairLoadsLastStep[hint];
-	if (!m_pairLoadsSorted)
+	const int n = m_pairLoadsLastStep.size();
+	if (hint >= 0 && hint < n && m_pairLoadsLastStep[hint].m_manifold == manifold) return &m_pairLoadsLastStep[hint];
+	// An open-addressing table of last step's records by manifold (each manifold is recorded once
+	// a step), built on the first miss: a power of two of at least twice the records, so a probe
+	// sequence ends at an empty slot (-1).
+	const auto slotOf = [](const void* key, int mask) {
+		const unsigned long long bits = static_cast<unsigned long long>(reinterpret_cast<uintptr_t>(key));
+		return int(((bits >> 4) * 0x9E3779B97F4A7C15ull) >> 33) & mask;
+	};
+	if (!m_pairLoadsIndexed)
 	{
-		m_pairLoadsByManifold.copyFromArray(m_pairLoadsLastStep);
-		if (m_pairLoadsByManifold.size() > 1)
-			m_pairLoadsByManifold.quickSort([](const btPairLoad& a, const btPairLoad& b) { return a.m_manifold < b.m_manifold; });
-		m_pairLoadsSorted = true;
+		int size = 16;
+		while (size < 2 * n) size *= 2;
+		m_pairLoadTable.resize(size);
+		for (int i = 0; i < size; ++i) m_pairLoadTable[i] = -1;
+		for (int i = 0; i < n; ++i)
+		{
+			int slot = slotOf(m_pairLoadsLastStep[i].m_manifold, size - 1);
+			while (m_pairLoadTable[slot] >= 0) slot = (slot + 1) & (size - 1);
+			m_pairLoadTable[slot] = i;
+		}
+		m_pairLoadsIndexed = true;
 	}
-	int low = 0, high = m_pairLoadsByManifold.size() - 1;
-	while (low <= high)
+	const int mask = m_pairLoadTable.size() - 1;
+	for (int slot = slotOf(manifold, mask);; slot = (slot + 1) & mask)
 	{
-		const int mid = (low + high) / 2;
-		const void* key = m_pairLoadsByManifold[mid].m_manifold;
-		if (key == manifold) return &m_pairLoadsByManifold[mid];
-		if (key < manifold) low = mid + 1;
-		else high = mid - 1;
+		const int i = m_pairLoadTable[slot];
+		if (i < 0) return 0;
+		if (m_pairLoadsLastStep[i].m_manifold == manifold) return &m_pairLoadsLastStep[i];
 	}
-	return 0;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -1434,8 +1447,10 @@ bool btLayeredPasses::gatherTippingMembers(int layer, int id, int mark, const bt
 	for (int j = first + 1; j < m_tipMembers.size() && !clash; ++j)
 	{
 		const int member = m_tipMembers[j];
-		// Its supports are the contact rows of the layer below its height.
-		visitBodyRows(member, m_layers->getHeight(m_nodeOfSolverBody[member]) - 1, pools, [&](const btSolverConstraint& row) {
+		// Its supports are the contact rows of the layer below its height; a row to another member
+		// is skipped without reading it.
+		visitBodyRows(member, m_layers->getHeight(m_nodeOfSolverBody[member]) - 1, pools, [&](const btSolverConstraint& row, int r) {
+			if (m_rowUpper[r] == member && m_tipOf[m_rowLower[r]] == mark) return;
 			const int other = row.m_solverBodyIdA == member ? row.m_solverBodyIdB : row.m_solverBodyIdA;
 			if (m_tipOf[other] != mark && restsOn(row, member)) m_tipOf[member] = -mark;  // left out (kept marked until the layer ends, then cleared)
 		});
@@ -1477,6 +1492,7 @@ void btLayeredPasses::buildRowsOfBody(const btSolverPools& pools)
 	cursor.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i) cursor[i] = m_rowsOfBodyStart[i];
 	m_rowUpper.resize(numPositions);
+	m_rowLower.resize(numPositions);
 	for (int r = 0; r < numPositions; ++r)  // ascending, so each body's positions are too
 	{
 		const btSolverConstraint& row = pools.m_contacts[m_contactRows[r]];
@@ -1484,7 +1500,9 @@ void btLayeredPasses::buildRowsOfBody(const btSolverPools& pools)
 		if (row.m_solverBodyIdB != row.m_solverBodyIdA) m_rowsOfBody[cursor[row.m_solverBodyIdB]++] = r;
 		const int nodeA = m_nodeOfSolverBody[row.m_solverBodyIdA], nodeB = m_nodeOfSolverBody[row.m_solverBodyIdB];
 		const int heightA = nodeA < 0 ? -1 : m_layers->getHeight(nodeA), heightB = nodeB < 0 ? -1 : m_layers->getHeight(nodeB);
-		m_rowUpper[r] = (nodeA < 0 || nodeB < 0 || heightA == heightB) ? -1 : (heightA > heightB ? row.m_solverBodyIdA : row.m_solverBodyIdB);
+		const bool ordered = nodeA >= 0 && nodeB >= 0 && heightA != heightB;
+		m_rowUpper[r] = !ordered ? -1 : (heightA > heightB ? row.m_solverBodyIdA : row.m_solverBodyIdB);
+		m_rowLower[r] = !ordered ? -1 : (heightA > heightB ? row.m_solverBodyIdB : row.m_solverBodyIdA);
 	}
 	m_tipEligible.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i)

@@ -332,15 +332,16 @@ private:
 		const void* m_body1;
 		btScalar m_total;
 	};
-	// D18: this step's records (appended per group) and last step's, in last step's order (findPairLoad sorts a copy on its first miss).
+	// D18: this step's records (appended per group) and last step's, in last step's order (findPairLoad indexes them on its first miss).
 	// Arrays keep their capacity, so a settled world's steps allocate nothing.
 	btAlignedObjectArray<btPairLoad> m_pairLoadsThisStep, m_pairLoadsLastStep;
 	/// Last step's load of the pair, or 0. hint: the manifold's place in this step's order of
 	/// look-ups (groups and their manifolds in turn), where a step like the last finds it at once;
-	/// elsewhere a copy sorted by manifold (made once per step, on the first miss) is searched.
+	/// elsewhere a hash table of last step's records by manifold (built once per step, on the
+	/// first miss; it keeps its capacity) is probed.
 	const btPairLoad* findPairLoad(const void* manifold, int hint);
-	btAlignedObjectArray<btPairLoad> m_pairLoadsByManifold;
-	bool m_pairLoadsSorted = false;
+	btAlignedObjectArray<int> m_pairLoadTable;  ///< record index per slot, -1: empty
+	bool m_pairLoadsIndexed = false;
 	int m_pairLoadCursor = 0;  ///< manifolds of this step's earlier groups (restorePairLoads' hints)
 	// D24: per free-body slot, the factor its support block kept for the weight pass (valid: 1).
 	btAlignedObjectArray<btCholesky6> m_blockFactor;
@@ -363,17 +364,17 @@ private:
 	// D25: per solver body its contact rows, as positions in m_contactRows in ascending order (CSR,
 	// built on the first gathering of a step), and the gathering's queue of positions (a min-heap).
 	void buildRowsOfBody(const btSolverPools& pools);
-	/// Calls visit(row) for each contact row of `layer` with solver body `id` at one end, in the
-	/// layer's order.
+	/// Calls visit(row, r) for each contact row of `layer` with solver body `id` at one end, in the
+	/// layer's order (r: the row's position, as m_rowUpper and m_rowLower index it).
 	template <class Visit>
 	void visitBodyRows(int id, int layer, const btSolverPools& pools, Visit visit);
 	btAlignedObjectArray<int> m_rowsOfBodyStart, m_rowsOfBody, m_tipQueue;
-	/// With m_rowsOfBody: the higher of the two solver bodies of each contact position (by stack
-	/// height; -1 where the heights are equal or an end is no graph node: no body can rest on the
-	/// other there), and per solver body whether it may join a tipping composite (a dynamic body,
+	/// With m_rowsOfBody: the higher and the lower of the two solver bodies of each contact
+	/// position (by stack height; -1 where the heights are equal or an end is no graph node: no
+	/// body can rest on the other there), and per solver body whether it may join a tipping composite (a dynamic body,
 	/// in no joint, with unit linear and angular factors), so the composite's walk queues only the
 	/// rows that can add a member and reads no row or body it skips.
-	btAlignedObjectArray<int> m_rowUpper;
+	btAlignedObjectArray<int> m_rowUpper, m_rowLower;
 	btAlignedObjectArray<char> m_tipEligible;
 	bool m_rowsOfBodyBuilt = false;
 	btAlignedObjectArray<char> m_rejectLocal;  // D26: per free body of the layer, its island was rejected
