@@ -24,6 +24,7 @@ subject to the following restrictions:
 #include "btBodyChecks.h"
 #include "btBoxFaceCorners.h"
 #include "btLayeredPasses.h"
+#include "btShockPredictor.h"
 #include "btWithheldReactions.h"
 #include "btPositionCorrection.h"
 
@@ -36,7 +37,8 @@ using namespace btShockPropagationChecks;
 
 btShockPropagationConstraintSolver::btShockPropagationConstraintSolver()
 	: m_passes(new (btAlignedAlloc(sizeof(btLayeredPasses), 16)) btLayeredPasses),
-	  m_correction(new (btAlignedAlloc(sizeof(btPositionCorrection), 16)) btPositionCorrection)
+	  m_correction(new (btAlignedAlloc(sizeof(btPositionCorrection), 16)) btPositionCorrection),
+	  m_predictor(new (btAlignedAlloc(sizeof(btShockPredictor), 16)) btShockPredictor)
 {
 }
 
@@ -52,6 +54,8 @@ btShockPropagationConstraintSolver::~btShockPropagationConstraintSolver()
 	btAlignedFree(m_passes);
 	m_correction->~btPositionCorrection();
 	btAlignedFree(m_correction);
+	m_predictor->~btShockPredictor();
+	btAlignedFree(m_predictor);
 }
 
 void btShockPropagationConstraintSolver::setWeighting(btScalar f)
@@ -142,7 +146,7 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 		// limit (D5) holds here too: a group that was layered last step may have left impulses
 		// sized for a heavy upper body on a light one.
 		clock.reset();
-		limitWarmStart(info);
+		if (!m_settings.m_diagnostics.m_convergingStep) limitWarmStart(info);
 		btSequentialImpulseConstraintSolver::solveGroup(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(),
 														m_manifolds.size() ? &m_manifolds[0] : 0, m_manifolds.size(),
 														m_constraints.size() ? &m_constraints[0] : 0, m_constraints.size(), info, debugDrawer, 0);
@@ -158,7 +162,10 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 	}
 	m_stats.m_numLayeredGroups += 1;
 	m_stats.m_numFixatedBodies += m_layers.getTotalFixated();
-	solveLayered(info, debugDrawer);
+	if (m_settings.m_diagnostics.m_convergingStep)
+		solveConverging(info, debugDrawer);
+	else
+		solveLayered(info, debugDrawer);
 	return btScalar(0);
 }
 
@@ -187,6 +194,12 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 
 	m_solverBodyOfNode.resize(m_bodies.size());
 	for (int i = 0; i < m_bodies.size(); ++i) m_solverBodyOfNode[i] = m_bodies[i]->getCompanionId();
+	// Stack height of each solver body; static and kinematic ones (Bullet's fixed body) are 0.
+	m_heightOfSolverBody.resize(m_tmpSolverBodyPool.size());
+	for (int i = 0; i < m_heightOfSolverBody.size(); ++i) m_heightOfSolverBody[i] = 0;
+	for (int i = 0; i < m_bodies.size(); ++i)
+		if (m_solverBodyOfNode[i] >= 0 && m_solverBodyOfNode[i] < m_heightOfSolverBody.size())
+			m_heightOfSolverBody[m_solverBodyOfNode[i]] = m_layers.getHeight(i);
 }
 
 void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)

@@ -196,6 +196,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_slidingComposites), true, "composites"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
+		switchFlag("--converging", "plugin: the converging step (predictor, corrector; opt-in, work in progress; docs/design.md section 9)",
+				   diagnostic(&btShockPropagationDiagnostics::m_convergingStep), true, "converging"),
 	};
 	return table;
 }

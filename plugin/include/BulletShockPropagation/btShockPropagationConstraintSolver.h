@@ -25,6 +25,7 @@ subject to the following restrictions:
 
 class btLayeredPasses;
 class btPositionCorrection;
+class btShockPredictor;
 class btShockPropagationDynamicsWorld;
 
 /// Velocity-based shock propagation (K. Erleben, ACM TOG 26(2), 2007) as a drop-in
@@ -113,6 +114,12 @@ private:
 					 btTypedConstraint** constraints, int numConstraints, bool countInStatistics);
 	void buildGraph();
 	void solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	// The converging step (opt-in, btShockPropagationDiagnostics::m_convergingStep), its stages in order.
+	void solveConverging(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	btContactSolverInfo setupRows(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	void predictVelocities(const btContactSolverInfo& info);
+	void correctVelocities(const btContactSolverInfo& info, const btContactSolverInfo& stepInfo);
+	void finishRows(const btContactSolverInfo& stepInfo);
 	void assignRowsToLayers();
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
 	void limitWarmStart(const btContactSolverInfo& info);
@@ -138,6 +145,8 @@ private:
 	btStackLayers m_layers;
 	btLayeredPasses* m_passes;
 	btPositionCorrection* m_correction;
+	btShockPredictor* m_predictor;
+	btAlignedObjectArray<int> m_heightOfSolverBody;  // converging step: stack height of each solver body
 
 	// Per step, read-only record for getLayeredBody (capacity kept across steps).
 	btAlignedObjectArray<const btCollisionObject*> m_layeredBodies;

@@ -1,0 +1,112 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+// The converging velocity step (opt-in: btShockPropagationDiagnostics::m_convergingStep; work in
+// progress of the converging-solver issue, docs/design.md section 9). One stacked group's step is
+// a list of stages called in order:
+//
+//   setupRows          Bullet's rows for the step's dt, as a stock step sets them up (no
+//                      Baumgarte term, no split impulse: the position correction's job; warm start
+//                      unscaled; two friction rows per point), each contact row given its layer;
+//   predictVelocities  shock propagation (btShockPredictor): fixated up pass, weight-feeling down
+//                      pass, every withheld impulse delivered, a line search on the coupled objective;
+//   correctVelocities  Bullet's own sweeps over every row, every body free: projected Gauss-Seidel
+//                      of the coupled problem from the predictor's impulses, ceil(f N) at most,
+//                      ended once no row changes by more than the convergence speed;
+//   finishRows         Bullet's finish (applied impulses, joint feedback and breaking, velocities);
+//   correctPositions   the layered position correction at CD(t) (btPositionCorrection).
+//
+// Every impulse of every stage acts on both bodies of its row once the predictor has delivered
+// what it withheld, so momentum and angular momentum change only through static and kinematic
+// bodies and external forces, and the corrector's fixed point is stock PGS's.
+
+#include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
+
+#include "btBodyChecks.h"
+#include "btShockPredictor.h"
+
+#include <cmath>
+
+using namespace btShockPropagationChecks;
+
+void btShockPropagationConstraintSolver::solveConverging(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	btClock clock;
+	const btContactSolverInfo stepInfo = setupRows(info, debugDrawer);
+	m_stats.m_timeSetupMs += millisecondsSince(clock);
+	clock.reset();
+	predictVelocities(info);
+	m_stats.m_timeLayersMs += millisecondsSince(clock);
+	clock.reset();
+	correctVelocities(info, stepInfo);
+	m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
+	clock.reset();
+	finishRows(stepInfo);
+	correctPositions(info, false, true);
+	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
+}
+
+btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	btContactSolverInfo stepInfo = info;
+	stepInfo.m_erp2 = btScalar(0);
+	stepInfo.m_splitImpulse = false;
+	stepInfo.m_warmstartingFactor = btScalar(1);
+	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
+	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
+	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
+	solveGroupCacheFriendlySetup(bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints, m_constraints.size(), stepInfo, debugDrawer);
+	assignRowsToLayers();
+	return stepInfo;
+}
+
+void btShockPropagationConstraintSolver::predictVelocities(const btContactSolverInfo& info)
+{
+	const btShockPredictor::Pools pools{m_tmpSolverBodyPool, m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool,
+										m_tmpSolverContactRollingFrictionConstraintPool};
+	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody);
+	const int sweeps = btMax(sweepCount(m_settings.m_layerIterations, info.m_numIterations), m_settings.m_layerIterationFloor);
+	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;
+	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling);
+}
+
+void btShockPropagationConstraintSolver::correctVelocities(const btContactSolverInfo& info, const btContactSolverInfo& stepInfo)
+{
+	const btScalar f = m_settings.m_weighting;
+	int sweeps = sweepCount(m_settings.m_globalIterations, info.m_numIterations);
+	if (m_settings.m_globalIterations < 0) sweeps = f > btScalar(0) ? btMax(1, int(std::ceil(double(f) * info.m_numIterations - 1e-4))) : 0;
+	// Joints that ask for more iterations (setOverrideNumSolverIterations) get them, as in a stock solve.
+	sweeps = btMax(sweeps, m_maxOverrideNumSolverIterations);
+	const btScalar converged = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * info.m_timeStep;
+	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
+	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
+	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
+	btContactSolverInfo sweepInfo = stepInfo;
+	sweepInfo.m_numIterations = sweeps;
+	for (int iteration = 0; iteration < sweeps; ++iteration)
+	{
+		++m_stats.m_numGlobalSweeps;
+		m_leastSquaresResidual = solveSingleIteration(iteration, bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints,
+													  m_constraints.size(), sweepInfo, 0);
+		if (m_leastSquaresResidual <= info.m_leastSquaresResidualThreshold) break;
+		// Bullet's residual is the sum of the rows' squared velocity changes.
+		if (iteration + 1 >= m_maxOverrideNumSolverIterations && m_leastSquaresResidual <= converged * converged) break;
+	}
+}
+
+void btShockPropagationConstraintSolver::finishRows(const btContactSolverInfo& stepInfo)
+{
+	solveGroupCacheFriendlyFinish(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(), stepInfo);
+}

@@ -1,0 +1,245 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+// The predictor stage (btShockPredictor.h): layered passes whose impulses are all delivered.
+
+#include "btShockPredictor.h"
+
+namespace
+{
+// J W J^T of one side of a row, as Bullet applies impulses (btSolverBody::internalApplyImpulse).
+btScalar sideTerm(const btVector3& normal, const btVector3& crossNormal, const btVector3& angularComponent, const btSolverBody& body)
+{
+	return normal.dot(normal * body.internalGetInvMass()) + crossNormal.dot(angularComponent);
+}
+}  // namespace
+
+void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer,
+							  const btAlignedObjectArray<btSolverBody>& bodies, const btAlignedObjectArray<int>& heightOfSolverBody)
+{
+	Row r;
+	r.m_row = &c;
+	r.m_normal = normal;
+	r.m_kind = kind;
+	r.m_withheld = 0;
+	r.m_fixed = 0;
+	r.m_scale = 1;
+	const int hA = heightOfSolverBody[c.m_solverBodyIdA];
+	const int hB = heightOfSolverBody[c.m_solverBodyIdB];
+	// A side is fixated in layer k if it is not above the layer (height <= k); a component
+	// without a root (height -1) has every body free.
+	const bool fixA = hA >= 0 && hA <= layer;
+	const bool fixB = hB >= 0 && hB <= layer;
+	if (fixA != fixB && c.m_jacDiagABInv != btScalar(0))
+	{
+		const btScalar dA = sideTerm(c.m_contactNormal1, c.m_relpos1CrossNormal, c.m_angularComponentA, bodies[c.m_solverBodyIdA]);
+		const btScalar dB = sideTerm(c.m_contactNormal2, c.m_relpos2CrossNormal, c.m_angularComponentB, bodies[c.m_solverBodyIdB]);
+		const btScalar cfm = c.m_cfm / c.m_jacDiagABInv;
+		const btScalar freeTerm = (fixA ? dB : dA) + cfm;
+		const btScalar total = dA + dB + cfm;
+		r.m_fixed = fixA ? 1 : 2;
+		// A free side that no impulse can move (a zero-mass axis): the row has nothing to solve.
+		r.m_scale = freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0);
+	}
+	m_rows[m_cursor[layer * 3 + kind]++] = r;
+}
+
+void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedObjectArray<int>& contactRowLayer,
+							 const btAlignedObjectArray<int>& heightOfSolverBody)
+{
+	m_numLayers = numLayers;
+	const int keys = numLayers * 3;
+	m_count.resize(keys + 1);
+	for (int i = 0; i <= keys; ++i) m_count[i] = 0;
+	const int numContacts = pools.m_contacts.size();
+	for (int i = 0; i < numContacts; ++i)
+		if (contactRowLayer[i] >= 0 && contactRowLayer[i] < numLayers) ++m_count[contactRowLayer[i] * 3 + CONTACT];
+	btConstraintArray* frictionPools[2] = {&pools.m_frictions, &pools.m_rollingFrictions};
+	for (int p = 0; p < 2; ++p)
+		for (int i = 0; i < frictionPools[p]->size(); ++i)
+		{
+			const int contact = (*frictionPools[p])[i].m_frictionIndex;
+			const int layer = contact >= 0 && contact < numContacts ? contactRowLayer[contact] : -1;
+			if (layer >= 0 && layer < numLayers) ++m_count[layer * 3 + FRICTION + p];
+		}
+	m_cursor.resize(keys + 1);
+	int total = 0;
+	for (int key = 0; key < keys; ++key)
+	{
+		m_cursor[key] = total;
+		total += m_count[key];
+	}
+	m_cursor[keys] = total;
+	m_layerStart.resize(numLayers + 1);
+	for (int k = 0; k <= numLayers; ++k) m_layerStart[k] = m_cursor[k * 3];
+	m_rows.resize(total);
+	for (int i = 0; i < numContacts; ++i)
+		if (contactRowLayer[i] >= 0 && contactRowLayer[i] < numLayers)
+			addRow(pools.m_contacts[i], 0, CONTACT, contactRowLayer[i], pools.m_bodies, heightOfSolverBody);
+	for (int p = 0; p < 2; ++p)
+		for (int i = 0; i < frictionPools[p]->size(); ++i)
+		{
+			btSolverConstraint& c = (*frictionPools[p])[i];
+			const int contact = c.m_frictionIndex;
+			const int layer = contact >= 0 && contact < numContacts ? contactRowLayer[contact] : -1;
+			if (layer >= 0 && layer < numLayers) addRow(c, &pools.m_contacts[contact], FRICTION + p, layer, pools.m_bodies, heightOfSolverBody);
+		}
+}
+
+btScalar btShockPredictor::rowVelocity(const btSolverConstraint& c, btAlignedObjectArray<btSolverBody>& bodies) const
+{
+	btSolverBody& a = bodies[c.m_solverBodyIdA];
+	btSolverBody& b = bodies[c.m_solverBodyIdB];
+	return c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity()) +
+		   c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
+}
+
+void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
+{
+	m_startLinear.resize(bodies.size());
+	m_startAngular.resize(bodies.size());
+	for (int i = 0; i < bodies.size(); ++i)
+	{
+		m_startLinear[i] = bodies[i].internalGetDeltaLinearVelocity();
+		m_startAngular[i] = bodies[i].internalGetDeltaAngularVelocity();
+	}
+	for (int i = 0; i < m_rows.size(); ++i)
+	{
+		Row& r = m_rows[i];
+		const btSolverConstraint& c = *r.m_row;
+		r.m_start = c.m_appliedImpulse;
+		r.m_error = c.m_jacDiagABInv != btScalar(0) ? (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - rowVelocity(c, bodies) : btScalar(0);
+	}
+}
+
+btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies)
+{
+	// The passes changed the impulses by d (every change applied to both bodies by now), the
+	// bodies' velocities by W J^T d. Along lambda0 + alpha d the coupled problem's objective is
+	//   f(alpha) = f(0) - alpha d.e + alpha^2 / 2 d^T (J W J^T + C) d,
+	// e the rows' velocity errors at lambda0, so its minimiser is alpha = d.e / d^T (J W J^T + C) d;
+	// every point of the segment is feasible (both ends are, the limits are convex).
+	btScalar descent = 0, curvature = 0;
+	for (int i = 0; i < m_rows.size(); ++i)
+	{
+		const Row& r = m_rows[i];
+		const btSolverConstraint& c = *r.m_row;
+		const btScalar d = c.m_appliedImpulse - r.m_start;
+		if (d == btScalar(0) || c.m_jacDiagABInv == btScalar(0)) continue;
+		const btSolverBody& a = bodies[c.m_solverBodyIdA];
+		const btSolverBody& b = bodies[c.m_solverBodyIdB];
+		const btScalar change = c.m_contactNormal1.dot(const_cast<btSolverBody&>(a).internalGetDeltaLinearVelocity() - m_startLinear[c.m_solverBodyIdA]) +
+								c.m_relpos1CrossNormal.dot(const_cast<btSolverBody&>(a).internalGetDeltaAngularVelocity() - m_startAngular[c.m_solverBodyIdA]) +
+								c.m_contactNormal2.dot(const_cast<btSolverBody&>(b).internalGetDeltaLinearVelocity() - m_startLinear[c.m_solverBodyIdB]) +
+								c.m_relpos2CrossNormal.dot(const_cast<btSolverBody&>(b).internalGetDeltaAngularVelocity() - m_startAngular[c.m_solverBodyIdB]);
+		descent += d * r.m_error;
+		curvature += d * (change + d * c.m_cfm / c.m_jacDiagABInv);
+	}
+	if (!(curvature > btScalar(0))) return btScalar(1);
+	const btScalar alpha = btMax(btScalar(0), btMin(btScalar(1), descent / curvature));
+	if (alpha == btScalar(1)) return alpha;
+	for (int i = 0; i < m_rows.size(); ++i)
+	{
+		btSolverConstraint& c = *m_rows[i].m_row;
+		c.m_appliedImpulse = m_rows[i].m_start + alpha * (c.m_appliedImpulse - m_rows[i].m_start);
+	}
+	for (int i = 0; i < bodies.size(); ++i)
+	{
+		btSolverBody& body = bodies[i];
+		body.internalGetDeltaLinearVelocity() = m_startLinear[i] + alpha * (body.internalGetDeltaLinearVelocity() - m_startLinear[i]);
+		body.internalGetDeltaAngularVelocity() = m_startAngular[i] + alpha * (body.internalGetDeltaAngularVelocity() - m_startAngular[i]);
+	}
+	return alpha;
+}
+
+btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& bodies)
+{
+	btSolverConstraint& c = *r.m_row;
+	if (r.m_normal)
+	{
+		// The bounds of a stock sweep: friction within mu times the normal impulse, rolling
+		// friction also within its own coefficient (btSequentialImpulseConstraintSolver).
+		const btScalar normal = r.m_normal->m_appliedImpulse;
+		if (!(normal > btScalar(0))) return 0;
+		const btScalar bound = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
+		c.m_lowerLimit = -bound;
+		c.m_upperLimit = bound;
+	}
+	if (r.m_scale == btScalar(0)) return 0;
+	btSolverBody& a = bodies[c.m_solverBodyIdA];
+	btSolverBody& b = bodies[c.m_solverBodyIdB];
+	const btScalar velocity = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity()) +
+							  c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
+	btScalar delta = r.m_scale * (c.m_rhs - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv);
+	const btScalar sum = c.m_appliedImpulse + delta;
+	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, sum));
+	delta = clamped - c.m_appliedImpulse;
+	c.m_appliedImpulse = clamped;
+	if (r.m_fixed != 1) a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, delta);
+	if (r.m_fixed != 2) b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, delta);
+	if (r.m_fixed) r.m_withheld += delta;
+	// The velocity change of the row (m/s): the impulse over its effective mass.
+	return c.m_jacDiagABInv != btScalar(0) ? btFabs(delta / (r.m_scale * c.m_jacDiagABInv)) : btScalar(0);
+}
+
+int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed)
+{
+	const int begin = m_layerStart[layer];
+	const int end = m_layerStart[layer + 1];
+	if (begin == end) return 0;
+	int run = 0;
+	for (int s = 0; s < sweeps; ++s)
+	{
+		btScalar largest = 0;
+		for (int i = begin; i < end; ++i) largest = btMax(largest, solveRow(m_rows[i], pools.m_bodies));
+		++run;
+		if (!(largest > convergedSpeed)) break;
+	}
+	return run;
+}
+
+void btShockPredictor::deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies)
+{
+	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
+	{
+		Row& r = m_rows[i];
+		if (r.m_fixed == 0 || r.m_withheld == btScalar(0)) continue;
+		const btSolverConstraint& c = *r.m_row;
+		if (r.m_fixed == 1)
+		{
+			btSolverBody& a = bodies[c.m_solverBodyIdA];
+			a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, r.m_withheld);
+		}
+		else
+		{
+			btSolverBody& b = bodies[c.m_solverBodyIdB];
+			b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, r.m_withheld);
+		}
+		r.m_withheld = 0;
+	}
+}
+
+int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling)
+{
+	int run = 0;
+	recordStart(pools.m_bodies);
+	for (int k = 0; k < m_numLayers; ++k) run += sweepLayer(k, pools, sweeps, convergedSpeed);
+	for (int k = m_numLayers - 1; k >= 0; --k)
+	{
+		if (weightFeeling) run += sweepLayer(k, pools, sweeps, convergedSpeed);
+		deliver(k, pools.m_bodies);
+	}
+	m_stepLength = lineSearch(pools.m_bodies);
+	return run;
+}

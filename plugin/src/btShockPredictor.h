@@ -1,0 +1,119 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#ifndef BT_SHOCK_PROPAGATION_SHOCK_PREDICTOR_H
+#define BT_SHOCK_PROPAGATION_SHOCK_PREDICTOR_H
+
+#include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
+
+class btStackLayers;
+
+/// The predictor stage of the velocity step: shock propagation (Erleben 2007) with weight
+/// feeling (in the spirit of Xiong et al. 2025), as an order of row updates whose impulses are
+/// all, in the end, applied to both bodies of their row. Private to the plugin.
+///
+/// Rows are Bullet's, set up once for the step (contact normals, friction, rolling friction).
+/// Row i couples bodies A and B with Jacobians J_A, J_B and effective-mass terms
+///   D_A = J_A W_A J_A^T,  D_B = J_B W_B J_B^T,  Bullet's m_jacDiagABInv = r / (D_A + D_B + c),
+/// (r the row's relaxation, c its constraint force mixing). Bullet's update of the row,
+///   dL = m_rhs - L m_cfm - m_jacDiagABInv (J_A dv_A + J_B dv_B),
+/// is the projected Gauss-Seidel step of the coupled problem. With B fixated (infinite mass,
+/// "fixate bottom-most objects of layer") the same row's exact step for A alone is
+///   dL' = s dL,   s = (D_A + D_B + c) / (D_A + c),
+/// applied to A only; B's share, dL' times its Jacobian, is *withheld* (kept per row) and applied
+/// to B later. Nothing is lost: once every withheld impulse is delivered, every row's impulse has
+/// acted on both bodies, so momentum and angular momentum change only through rows to static or
+/// kinematic bodies and external forces (Newton's third law holds for the whole pass).
+///
+/// Layer k holds the rows of the graph edges whose upper end has height k + 1 (btStackLayers);
+/// its lower ends (height <= k) are fixated in it.
+///   up pass    k = 0 .. K-1: sweep layer k, lower ends fixated, until converged;
+///   down pass  k = K-1 .. 0 (weight feeling): sweep layer k again (its bodies now carry what was
+///              delivered to them from above), then deliver its withheld impulses to the bodies
+///              below; without weight feeling every withheld impulse is delivered after the up
+///              pass (the classic method, which then leaves the rest to the corrector).
+/// For a column this is the exact block elimination of the contact problem: the up pass gives
+/// each body its own weight, the down pass hands each body the reactions of those above.
+///
+/// Line search. Where fixation is wrong (a support that slides, a body that tips with what it
+/// carries) the passes' impulse change d is not the coupled problem's answer, and taken whole it
+/// can add energy (a stack on ice: the up pass drags every body to the bottom one's velocity and
+/// the delivered reactions hand the bottom body (carried mass / its mass) times its error). So
+/// the predictor takes alpha d, alpha in [0, 1] minimising the coupled problem's objective along
+/// the segment (closed form, lineSearch()); every point of the segment is feasible. The step
+/// therefore never raises the objective the corrector then lowers, and its impulses, delivered,
+/// keep Newton's third law whatever alpha is.
+class btShockPredictor
+{
+public:
+	struct Pools
+	{
+		btAlignedObjectArray<btSolverBody>& m_bodies;
+		btConstraintArray& m_contacts;
+		btConstraintArray& m_frictions;
+		btConstraintArray& m_rollingFrictions;
+	};
+
+	/// Bucket the rows by layer. contactRowLayer: layer of each contact row (-1: in no layer);
+	/// heightOfSolverBody: stack height of each solver body (0: static or kinematic, -1: in a
+	/// component without a root, never fixated).
+	void build(const Pools& pools, int numLayers, const btAlignedObjectArray<int>& contactRowLayer,
+			   const btAlignedObjectArray<int>& heightOfSolverBody);
+
+	/// Up pass then down pass (or delivery); at most sweeps per layer and pass, a layer ends once
+	/// a sweep changes no row's velocity by more than convergedSpeed (m/s). Returns sweeps run.
+	int predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling);
+
+	int getNumLayers() const { return m_numLayers; }
+	/// The step length the last predict() took along its passes' impulse changes (1: all of them).
+	btScalar getStepLength() const { return m_stepLength; }
+
+private:
+	enum Kind
+	{
+		CONTACT,
+		FRICTION,
+		ROLLING
+	};
+	struct Row
+	{
+		btSolverConstraint* m_row;
+		const btSolverConstraint* m_normal;  // friction rows: the contact row bounding them
+		btScalar m_scale;                     // s above; 1 when no side is fixated
+		btScalar m_withheld;                  // impulse not yet applied to the fixated side (N s)
+		btScalar m_start;                     // impulse before the passes (N s)
+		btScalar m_error;                     // velocity error before the passes (m/s)
+		int m_kind;
+		int m_fixed;  // 0: none, 1: A, 2: B
+	};
+
+	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
+	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
+	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
+	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
+				const btAlignedObjectArray<int>& heightOfSolverBody);
+
+	btScalar rowVelocity(const btSolverConstraint& c, btAlignedObjectArray<btSolverBody>& bodies) const;
+	void recordStart(btAlignedObjectArray<btSolverBody>& bodies);
+	btScalar lineSearch(btAlignedObjectArray<btSolverBody>& bodies);
+
+	int m_numLayers = 0;
+	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
+	btAlignedObjectArray<Row> m_rows;        // by layer
+	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
+	btAlignedObjectArray<int> m_count, m_cursor;
+	btScalar m_stepLength = 1;
+};
+
+#endif  // BT_SHOCK_PROPAGATION_SHOCK_PREDICTOR_H
