@@ -13,7 +13,7 @@ subject to the following restrictions:
 */
 
 // The converging velocity step (opt-in: btShockPropagationDiagnostics::m_convergingStep; work in
-// progress of the converging-solver issue, docs/design.md section 9). One stacked group's step is
+// progress of the converging-solver issue, docs/design.md section 4u). One stacked group's step is
 // a list of stages called in order:
 //
 //   setupRows          Bullet's rows for the step's dt, as a stock step sets them up (no
@@ -34,7 +34,9 @@ subject to the following restrictions:
 #include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
 
 #include "btBodyChecks.h"
+#include "btBoxFaceCorners.h"
 #include "btShockPredictor.h"
+
 
 #include <cmath>
 
@@ -64,12 +66,64 @@ btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContac
 	stepInfo.m_splitImpulse = false;
 	stepInfo.m_warmstartingFactor = btScalar(1);
 	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+	if (m_settings.m_keepBoxFaceCorners)
+	{
+		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
+		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numBoxFaceCorners += btKeepBoxFaceCorners(*m_manifolds[i], reach);
+	}
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
 	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
+	// Last step's friction impulse of each point, as a vector: finishRows leaves it in the point as
+	// components along btPlaneSpace1 of the point's normal (Bullet keeps the lateral impulses when
+	// it refreshes a point, not the directions; its setup starts friction rows from zero).
+	m_frictionStart.resize(m_manifolds.size() + 1);
+	m_lastFriction.resize(0);
+	for (int i = 0; i < m_manifolds.size(); ++i)
+	{
+		m_frictionStart[i] = m_lastFriction.size();
+		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
+		{
+			const btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
+			btVector3 t1, t2;
+			btPlaneSpace1(cp.m_normalWorldOnB, t1, t2);
+			btVector3 f = t1 * cp.m_appliedImpulseLateral1 + t2 * cp.m_appliedImpulseLateral2;
+			if (!(f.fuzzyZero() || f.length2() < SIMD_INFINITY)) f.setZero();  // NaN or Inf: no warm start
+			m_lastFriction.push_back(f);
+		}
+	}
+	m_frictionStart[m_manifolds.size()] = m_lastFriction.size();
 	solveGroupCacheFriendlySetup(bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints, m_constraints.size(), stepInfo, debugDrawer);
 	assignRowsToLayers();
+	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING) warmStartFriction();
 	return stepInfo;
+}
+
+void btShockPropagationConstraintSolver::warmStartFriction()
+{
+	// Each friction row starts from last step's friction impulse projected on its direction,
+	// within its bound for the warm-started normal impulse, applied to both bodies (as Bullet's
+	// setup does for the normal rows). Without it a resting body whose normal impulses were
+	// balanced by friction last step starts the step turning.
+	for (int r = 0; r < m_tmpSolverContactFrictionConstraintPool.size(); ++r)
+	{
+		btSolverConstraint& c = m_tmpSolverContactFrictionConstraintPool[r];
+		const int contact = c.m_frictionIndex;
+		if (contact < 0 || contact >= m_tmpSolverContactConstraintPool.size()) continue;
+		const int manifold = m_contactRowManifold[contact];
+		if (manifold < 0) continue;
+		const btManifoldPoint* first = &m_manifolds[manifold]->getContactPoint(0);
+		const int point = int(static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[contact].m_originalContactPoint) - first);
+		if (point < 0 || m_frictionStart[manifold] + point >= m_frictionStart[manifold + 1]) continue;
+		const btScalar bound = c.m_friction * btMax(btScalar(0), m_tmpSolverContactConstraintPool[contact].m_appliedImpulse);
+		const btScalar impulse = btMax(-bound, btMin(bound, m_lastFriction[m_frictionStart[manifold] + point].dot(c.m_contactNormal1)));
+		if (impulse == btScalar(0)) continue;
+		c.m_appliedImpulse = impulse;
+		btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
+		btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
+		a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, impulse);
+		b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, impulse);
+	}
 }
 
 void btShockPropagationConstraintSolver::predictVelocities(const btContactSolverInfo& info)
@@ -77,7 +131,7 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 	const btShockPredictor::Pools pools{m_tmpSolverBodyPool, m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool,
 										m_tmpSolverContactRollingFrictionConstraintPool};
 	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody);
-	const int sweeps = btMax(sweepCount(m_settings.m_layerIterations, info.m_numIterations), m_settings.m_layerIterationFloor);
+	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;
 	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling);
 }
@@ -108,5 +162,29 @@ void btShockPropagationConstraintSolver::correctVelocities(const btContactSolver
 
 void btShockPropagationConstraintSolver::finishRows(const btContactSolverInfo& stepInfo)
 {
+	// Each point's friction impulse, re-expressed along btPlaneSpace1 of its normal (the same
+	// impulse, the directions stored with it), so that the next step can warm-start it.
+	const bool two = (stepInfo.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
+	m_frictionPoints.resize(0);
+	m_frictionImpulses.resize(0);
+	for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r)
+	{
+		const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[r];
+		btManifoldPoint* cp = static_cast<btManifoldPoint*>(contact.m_originalContactPoint);
+		const int first = contact.m_frictionIndex;
+		if (!cp || first < 0 || first + (two ? 1 : 0) >= m_tmpSolverContactFrictionConstraintPool.size()) continue;
+		const btSolverConstraint& f1 = m_tmpSolverContactFrictionConstraintPool[first];
+		btVector3 f = f1.m_contactNormal1 * f1.m_appliedImpulse;
+		if (two) f += m_tmpSolverContactFrictionConstraintPool[first + 1].m_contactNormal1 * m_tmpSolverContactFrictionConstraintPool[first + 1].m_appliedImpulse;
+		m_frictionPoints.push_back(cp);
+		m_frictionImpulses.push_back(f);
+	}
 	solveGroupCacheFriendlyFinish(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(), stepInfo);
+	for (int i = 0; i < m_frictionPoints.size(); ++i)
+	{
+		btManifoldPoint* cp = m_frictionPoints[i];
+		btPlaneSpace1(cp->m_normalWorldOnB, cp->m_lateralFrictionDir1, cp->m_lateralFrictionDir2);
+		cp->m_appliedImpulseLateral1 = m_frictionImpulses[i].dot(cp->m_lateralFrictionDir1);
+		cp->m_appliedImpulseLateral2 = m_frictionImpulses[i].dot(cp->m_lateralFrictionDir2);
+	}
 }

@@ -16,6 +16,8 @@ subject to the following restrictions:
 
 #include "btShockPredictor.h"
 
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+
 namespace
 {
 // J W J^T of one side of a row, as Bullet applies impulses (btSolverBody::internalApplyImpulse).
@@ -97,14 +99,6 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 		}
 }
 
-btScalar btShockPredictor::rowVelocity(const btSolverConstraint& c, btAlignedObjectArray<btSolverBody>& bodies) const
-{
-	btSolverBody& a = bodies[c.m_solverBodyIdA];
-	btSolverBody& b = bodies[c.m_solverBodyIdB];
-	return c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity()) +
-		   c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
-}
-
 void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
 {
 	m_startLinear.resize(bodies.size());
@@ -116,39 +110,42 @@ void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
 	}
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
-		Row& r = m_rows[i];
-		const btSolverConstraint& c = *r.m_row;
-		r.m_start = c.m_appliedImpulse;
-		r.m_error = c.m_jacDiagABInv != btScalar(0) ? (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - rowVelocity(c, bodies) : btScalar(0);
+		m_rows[i].m_start = m_rows[i].m_row->m_appliedImpulse;
 	}
 }
 
 btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies)
 {
-	// The passes changed the impulses by d (every change applied to both bodies by now), the
-	// bodies' velocities by W J^T d. Along lambda0 + alpha d the coupled problem's objective is
-	//   f(alpha) = f(0) - alpha d.e + alpha^2 / 2 d^T (J W J^T + C) d,
-	// e the rows' velocity errors at lambda0, so its minimiser is alpha = d.e / d^T (J W J^T + C) d;
-	// every point of the segment is feasible (both ends are, the limits are convex).
-	btScalar descent = 0, curvature = 0;
-	for (int i = 0; i < m_rows.size(); ++i)
+	// The passes changed the bodies' velocities from u to u + du (every impulse delivered to both
+	// bodies by now). Along u + alpha du the kinetic energy is
+	//   E(alpha) = E(0) + alpha du.M u + alpha^2 / 2 du.M du,
+	// so the step taken is alpha = clamp(-du.M u / du.M du, 0, 1): contact impulses are passive,
+	// and where fixation is wrong (a support that slides: the up pass drags every body to the
+	// bottom one's velocity and the delivered reactions hand the bottom body the carried mass
+	// times its error) the step that would add energy is shortened. The impulses are scaled alike,
+	// so the velocities stay those of the impulses and Newton's third law holds for any alpha.
+	btScalar slope = 0, curvature = 0;
+	for (int i = 0; i < bodies.size(); ++i)
 	{
-		const Row& r = m_rows[i];
-		const btSolverConstraint& c = *r.m_row;
-		const btScalar d = c.m_appliedImpulse - r.m_start;
-		if (d == btScalar(0) || c.m_jacDiagABInv == btScalar(0)) continue;
-		const btSolverBody& a = bodies[c.m_solverBodyIdA];
-		const btSolverBody& b = bodies[c.m_solverBodyIdB];
-		const btScalar change = c.m_contactNormal1.dot(const_cast<btSolverBody&>(a).internalGetDeltaLinearVelocity() - m_startLinear[c.m_solverBodyIdA]) +
-								c.m_relpos1CrossNormal.dot(const_cast<btSolverBody&>(a).internalGetDeltaAngularVelocity() - m_startAngular[c.m_solverBodyIdA]) +
-								c.m_contactNormal2.dot(const_cast<btSolverBody&>(b).internalGetDeltaLinearVelocity() - m_startLinear[c.m_solverBodyIdB]) +
-								c.m_relpos2CrossNormal.dot(const_cast<btSolverBody&>(b).internalGetDeltaAngularVelocity() - m_startAngular[c.m_solverBodyIdB]);
-		descent += d * r.m_error;
-		curvature += d * (change + d * c.m_cfm / c.m_jacDiagABInv);
+		btSolverBody& body = bodies[i];
+		const btRigidBody* rb = body.m_originalBody;
+		if (!rb || !(rb->getInvMass() > btScalar(0))) continue;
+		const btVector3 dv = body.internalGetDeltaLinearVelocity() - m_startLinear[i];
+		const btVector3 dw = body.internalGetDeltaAngularVelocity() - m_startAngular[i];
+		if (dv.isZero() && dw.isZero()) continue;
+		const btVector3 v = body.m_linearVelocity + body.m_externalForceImpulse + m_startLinear[i];
+		const btVector3 w = body.m_angularVelocity + body.m_externalTorqueImpulse + m_startAngular[i];
+		const btScalar mass = btScalar(1) / rb->getInvMass();
+		const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
+		// I dw from I^-1 (I dw) = dw: the momentum the passes gave the body's spin.
+		btVector3 Idw(0, 0, 0);
+		if (btFabs(invInertia.determinant()) > SIMD_EPSILON) Idw = invInertia.inverse() * dw;
+		slope += mass * dv.dot(v) + Idw.dot(w);
+		curvature += mass * dv.length2() + Idw.dot(dw);
 	}
 	if (!(curvature > btScalar(0))) return btScalar(1);
-	const btScalar alpha = btMax(btScalar(0), btMin(btScalar(1), descent / curvature));
-	if (alpha == btScalar(1)) return alpha;
+	const btScalar alpha = btMax(btScalar(0), btMin(btScalar(1), -slope / curvature));
+	if (!(alpha < btScalar(1))) return btScalar(1);
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
 		btSolverConstraint& c = *m_rows[i].m_row;
@@ -170,8 +167,9 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 	{
 		// The bounds of a stock sweep: friction within mu times the normal impulse, rolling
 		// friction also within its own coefficient (btSequentialImpulseConstraintSolver).
-		const btScalar normal = r.m_normal->m_appliedImpulse;
-		if (!(normal > btScalar(0))) return 0;
+		// A contact that pushes no more carries no friction: the bound is then 0 (Bullet's sweep
+		// skips such a row and would leave its impulse in place).
+		const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
 		const btScalar bound = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
 		c.m_lowerLimit = -bound;
 		c.m_upperLimit = bound;
@@ -199,11 +197,36 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	const int end = m_layerStart[layer + 1];
 	if (begin == end) return 0;
 	int run = 0;
+	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
+	m_sweepLinear.resize(bodies.size());
+	m_sweepAngular.resize(bodies.size());
 	for (int s = 0; s < sweeps; ++s)
 	{
-		btScalar largest = 0;
-		for (int i = begin; i < end; ++i) largest = btMax(largest, solveRow(m_rows[i], pools.m_bodies));
+		// Converged once a whole sweep moves no row's bodies by more than convergedSpeed (m/s)
+		// along the row: a sweep whose row updates only shift load among a body's supports
+		// (statically indeterminate) changes no velocity and ends the layer.
+		for (int i = begin; i < end; ++i)
+		{
+			const btSolverConstraint& c = *m_rows[i].m_row;
+			m_sweepLinear[c.m_solverBodyIdA] = bodies[c.m_solverBodyIdA].internalGetDeltaLinearVelocity();
+			m_sweepAngular[c.m_solverBodyIdA] = bodies[c.m_solverBodyIdA].internalGetDeltaAngularVelocity();
+			m_sweepLinear[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaLinearVelocity();
+			m_sweepAngular[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaAngularVelocity();
+		}
+		for (int i = begin; i < end; ++i) solveRow(m_rows[i], bodies);
 		++run;
+		btScalar largest = 0;
+		for (int i = begin; i < end; ++i)
+		{
+			const btSolverConstraint& c = *m_rows[i].m_row;
+			btSolverBody& a = bodies[c.m_solverBodyIdA];
+			btSolverBody& b = bodies[c.m_solverBodyIdB];
+			const btScalar change = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity() - m_sweepLinear[c.m_solverBodyIdA]) +
+									c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity() - m_sweepAngular[c.m_solverBodyIdA]) +
+									c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity() - m_sweepLinear[c.m_solverBodyIdB]) +
+									c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity() - m_sweepAngular[c.m_solverBodyIdB]);
+			largest = btMax(largest, btFabs(change));
+		}
 		if (!(largest > convergedSpeed)) break;
 	}
 	return run;

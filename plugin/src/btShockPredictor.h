@@ -46,14 +46,15 @@ class btStackLayers;
 /// For a column this is the exact block elimination of the contact problem: the up pass gives
 /// each body its own weight, the down pass hands each body the reactions of those above.
 ///
-/// Line search. Where fixation is wrong (a support that slides, a body that tips with what it
-/// carries) the passes' impulse change d is not the coupled problem's answer, and taken whole it
-/// can add energy (a stack on ice: the up pass drags every body to the bottom one's velocity and
-/// the delivered reactions hand the bottom body (carried mass / its mass) times its error). So
-/// the predictor takes alpha d, alpha in [0, 1] minimising the coupled problem's objective along
-/// the segment (closed form, lineSearch()); every point of the segment is feasible. The step
-/// therefore never raises the objective the corrector then lowers, and its impulses, delivered,
-/// keep Newton's third law whatever alpha is.
+/// Line search. Where fixation is wrong (a support that slides) the passes' change is not the
+/// coupled problem's answer, and taken whole it can add energy: on ice the up pass drags every
+/// body to the bottom one's velocity and the delivered reactions hand the bottom body (carried
+/// mass / its mass) times its error. The passes move the bodies' velocities from u to u + du;
+/// along u + alpha du the kinetic energy is E(0) + alpha du.M u + alpha^2/2 du.M du, and the
+/// predictor takes alpha = clamp(-du.M u / du.M du, 0, 1), scaling the impulse changes alike:
+/// contact impulses are passive, and Newton's third law holds for any alpha. (PGS's own objective
+/// is no measure here: with Coulomb friction its bounds move with the normal impulses, and a
+/// search on it stopped a resting tower's predictor; docs/design.md, section 4u.)
 class btShockPredictor
 {
 public:
@@ -93,7 +94,6 @@ private:
 		btScalar m_scale;                     // s above; 1 when no side is fixated
 		btScalar m_withheld;                  // impulse not yet applied to the fixated side (N s)
 		btScalar m_start;                     // impulse before the passes (N s)
-		btScalar m_error;                     // velocity error before the passes (m/s)
 		int m_kind;
 		int m_fixed;  // 0: none, 1: A, 2: B
 	};
@@ -104,12 +104,12 @@ private:
 	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
 				const btAlignedObjectArray<int>& heightOfSolverBody);
 
-	btScalar rowVelocity(const btSolverConstraint& c, btAlignedObjectArray<btSolverBody>& bodies) const;
 	void recordStart(btAlignedObjectArray<btSolverBody>& bodies);
 	btScalar lineSearch(btAlignedObjectArray<btSolverBody>& bodies);
 
 	int m_numLayers = 0;
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
+	btAlignedObjectArray<btVector3> m_sweepLinear, m_sweepAngular;  // per solver body, before the current sweep
 	btAlignedObjectArray<Row> m_rows;        // by layer
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
 	btAlignedObjectArray<int> m_count, m_cursor;

@@ -82,6 +82,9 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 		m_settings.m_correctionSlopPerFall = defaults.m_correctionSlopPerFall;
 	m_settings.m_weightIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_weightIterations);
 	if (!(settings.m_diagnostics.m_weightConvergence >= 0) || !isFiniteScalar(settings.m_diagnostics.m_weightConvergence)) m_settings.m_diagnostics.m_weightConvergence = defaults.m_diagnostics.m_weightConvergence;
+	if (!(settings.m_diagnostics.m_predictorConvergence >= 0) || !isFiniteScalar(settings.m_diagnostics.m_predictorConvergence))
+		m_settings.m_diagnostics.m_predictorConvergence = defaults.m_diagnostics.m_predictorConvergence;
+	m_settings.m_diagnostics.m_predictorIterations = btMax(0, settings.m_diagnostics.m_predictorIterations);
 	if (!(settings.m_diagnostics.m_warmStartFactor <= 1) || !isFiniteScalar(settings.m_diagnostics.m_warmStartFactor)) m_settings.m_diagnostics.m_warmStartFactor = defaults.m_diagnostics.m_warmStartFactor;
 	if (!isFiniteScalar(settings.m_diagnostics.m_supportAngle)) m_settings.m_diagnostics.m_supportAngle = defaults.m_diagnostics.m_supportAngle;
 	if (!(settings.m_diagnostics.m_warmStartCoupling >= 0 && settings.m_diagnostics.m_warmStartCoupling <= 1)) m_settings.m_diagnostics.m_warmStartCoupling = defaults.m_diagnostics.m_warmStartCoupling;
@@ -175,6 +178,7 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 	// the processing threshold, so a manifold's rows are consecutive and point into its cache.
 	const int numRows = m_tmpSolverContactConstraintPool.size();
 	m_contactRowLayer.resize(numRows);
+	m_contactRowManifold.resize(numRows);
 	int row = 0;
 	for (int i = 0; i < m_manifolds.size() && row < numRows; ++i)
 	{
@@ -187,10 +191,15 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 		{
 			const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[row].m_originalContactPoint);
 			if (cp < first || cp >= last) break;
+			m_contactRowManifold[row] = i;
 			m_contactRowLayer[row++] = layer;
 		}
 	}
-	for (; row < numRows; ++row) m_contactRowLayer[row] = -1;
+	for (; row < numRows; ++row)
+	{
+		m_contactRowLayer[row] = -1;
+		m_contactRowManifold[row] = -1;
+	}
 
 	m_solverBodyOfNode.resize(m_bodies.size());
 	for (int i = 0; i < m_bodies.size(); ++i) m_solverBodyOfNode[i] = m_bodies[i]->getCompanionId();

@@ -1,5 +1,5 @@
 // Conservation specs of the converging step (opt-in: btShockPropagationDiagnostics::m_convergingStep,
-// docs/design.md section 9), built as an app builds its world (Bullet's defaults, 60 Hz, 10
+// docs/design.md section 4u), built as an app builds its world (Bullet's defaults, 60 Hz, 10
 // iterations, sleeping off), world and solver-only mode.
 //
 // On a frictionless static floor nothing acts on a stack horizontally but its own contacts, so its
@@ -8,7 +8,7 @@
 // in the same test where the claim is "no worse than stock". Each test prints one line
 //   CONSERVATION | <case> | stock ... | world ... | solver ...
 // before it asserts, with the default step's figures beside them (not asserted: it does not
-// conserve; docs/design.md section 9).
+// conserve; docs/design.md section 4u).
 
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 #include <btBulletDynamicsCommon.h>
@@ -217,7 +217,7 @@ TEST(Conservation, CoastingColumnOnIceCoastsAsOne)
 
 // BenchmarkDemo's 1000:1 column (three 1 kg boxes under a 1000 kg one) on ice. Every impulse acts
 // on both of its bodies, so the horizontal momentum stays whatever the column does. It is crushed
-// (the predictor's rows cannot carry a 1000:1 load within its sweeps; docs/design.md section 9),
+// (the predictor's rows cannot carry a 1000:1 load within its sweeps; docs/design.md section 4u),
 // as stock's is; crushed boxes sink into the floor box and meet its sides, whose horizontal
 // normals turn the column about the vertical, so only the linear momentum is a conservation law here.
 TEST(Conservation, HeavyTopColumnOnIceKeepsItsMomentum)

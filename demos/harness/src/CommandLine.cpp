@@ -196,8 +196,12 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_slidingComposites), true, "composites"),
 		switchFlag("--second-correction", "plugin: the paper's second correction after the positions advance (D4; off by default)",
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
-		switchFlag("--converging", "plugin: the converging step (predictor, corrector; opt-in, work in progress; docs/design.md section 9)",
+		switchFlag("--converging", "plugin: the converging step (predictor, corrector; opt-in, work in progress; docs/design.md section 4u)",
 				   diagnostic(&btShockPropagationDiagnostics::m_convergingStep), true, "converging"),
+		numberFlag("--predictor-convergence", "C,...", "plugin: the converging step's predictor ends a layer once a sweep moves no row by more than C |g| dt (default 6e-6; section 4u)",
+				   diagnostic(&btShockPropagationDiagnostics::m_predictorConvergence), "pconv", [](double c) { return c >= 0; }, ">= 0"),
+		numberFlag("--predictor-sweeps", "N,...", "plugin: most sweeps per layer and pass of the converging step's predictor (default 200; section 4u)",
+				   diagnostic(&btShockPropagationDiagnostics::m_predictorIterations), "psweeps", [](double n) { return n >= 0; }, ">= 0"),
 	};
 	return table;
 }

@@ -259,19 +259,23 @@ struct btShockPropagationDiagnostics
 	/// off in the app stays off.
 	btScalar m_warmStartFactor = btScalar(1);
 
-	/// Opt-in, work in progress (the converging-solver issue; docs/design.md, section 9): solve
-	/// stacked groups with the converging step instead of the layered passes: Bullet's setup, the
-	/// shock-propagation predictor (btShockPredictor: fixated up pass, weight-feeling down pass,
-	/// every withheld impulse delivered, a line search on the coupled objective), Bullet's own
-	/// sweeps as the corrector (ceil(f N), ended once converged), Bullet's finish, the layered
-	/// position correction. Momentum is conserved by construction; it does not yet hold every
-	/// stack the default step holds (measured in docs/design.md, section 9), so it is off.
+	/// Opt-in, work in progress (the converging-solver issue; docs/design.md, section 4u): solve
+	/// stacked groups with the converging step instead of the layered passes: Bullet's setup with
+	/// friction warm-started, the shock-propagation predictor (btShockPredictor: fixated up pass,
+	/// weight-feeling down pass, every withheld impulse delivered, a kinetic-energy line search),
+	/// Bullet's own sweeps as the corrector (ceil(f N), ended once converged), Bullet's finish,
+	/// the layered position correction. Momentum is conserved by construction; it holds 19 of
+	/// the 26 truths, not the walls and round towers the default step holds, so it is off.
 	bool m_convergingStep = false;
 
-	/// The converging step's predictor: a layer ends once a sweep changes no row's velocity by
-	/// more than this share of |g| dt (unitless; 0.0006 = 0.1 mm/s at 9.81 m/s^2 and 60 Hz). At
-	/// 0.006 (1 mm/s) the tower of 20 falls: each layer's leftover error is handed to the next.
-	btScalar m_predictorConvergence = btScalar(0.0006);
+	/// The converging step's predictor: a layer ends once a sweep moves no row's bodies by more
+	/// than this share of |g| dt along the row (unitless; 6e-6 = 1 micrometre/s at 9.81 m/s^2 and
+	/// 60 Hz). A layer's leftover error is handed to the next one: at 6e-4 (0.1 mm/s) the tower of
+	/// 20 moves at 3.6 s, at 6e-6 it stands (docs/design.md, section 4u).
+	btScalar m_predictorConvergence = btScalar(6e-6);
+
+	/// Most sweeps of each layer in each of the converging step's predictor passes (count).
+	int m_predictorIterations = 200;
 };
 
 /// What users tune, with its default, unit and reason (the diagnostics switches are in
