@@ -37,6 +37,9 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 	r.m_withheld = 0;
 	r.m_fixed = 0;
 	r.m_scale = 1;
+	r.m_total = 0;
+	r.m_layerDelta = 0;
+	r.m_free = -1;
 	const int hA = heightOfSolverBody[c.m_solverBodyIdA];
 	const int hB = heightOfSolverBody[c.m_solverBodyIdB];
 	// A side is fixated in layer k if it is not above the layer (height <= k); a component
@@ -51,6 +54,8 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 		const btScalar freeTerm = (fixA ? dB : dA) + cfm;
 		const btScalar total = dA + dB + cfm;
 		r.m_fixed = fixA ? 1 : 2;
+		r.m_free = fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA;
+		r.m_total = total;
 		// A free side that no impulse can move (a zero-mass axis): the row has nothing to solve.
 		r.m_scale = freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0);
 	}
@@ -191,7 +196,7 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 	return c.m_jacDiagABInv != btScalar(0) ? btFabs(delta / (r.m_scale * c.m_jacDiagABInv)) : btScalar(0);
 }
 
-int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed)
+int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
 {
 	const int begin = m_layerStart[layer];
 	const int end = m_layerStart[layer + 1];
@@ -200,8 +205,15 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
 	m_sweepLinear.resize(bodies.size());
 	m_sweepAngular.resize(bodies.size());
+	if (composites) formComposites(layer, pools);
+	const bool anyComposite = composites && m_composites.size() > 0;
 	for (int s = 0; s < sweeps; ++s)
 	{
+		for (int i = 0; i < m_composites.size() && anyComposite; ++i)
+		{
+			m_composites[i].m_sweepDv = m_composites[i].m_dv;
+			m_composites[i].m_sweepDw = m_composites[i].m_dw;
+		}
 		// Converged once a whole sweep moves no row's bodies by more than convergedSpeed (m/s)
 		// along the row: a sweep whose row updates only shift load among a body's supports
 		// (statically indeterminate) changes no velocity and ends the layer.
@@ -213,9 +225,16 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 			m_sweepLinear[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaLinearVelocity();
 			m_sweepAngular[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaAngularVelocity();
 		}
-		for (int i = begin; i < end; ++i) solveRow(m_rows[i], bodies);
+		for (int i = begin; i < end; ++i)
+		{
+			Row& r = m_rows[i];
+			if (anyComposite && r.m_free >= 0 && m_compositeOf[r.m_free] >= 0)
+				solveCompositeRow(r, m_composites[m_compositeOf[r.m_free]], bodies);
+			else
+				solveRow(r, bodies);
+		}
 		++run;
-		btScalar largest = 0;
+		btScalar largest = anyComposite ? compositeMotion(layer, bodies) : btScalar(0);
 		for (int i = begin; i < end; ++i)
 		{
 			const btSolverConstraint& c = *m_rows[i].m_row;
@@ -229,6 +248,7 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 		}
 		if (!(largest > convergedSpeed)) break;
 	}
+	if (anyComposite) finishComposites(layer, pools);
 	return run;
 }
 
@@ -257,10 +277,11 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 {
 	int run = 0;
 	recordStart(pools.m_bodies);
-	for (int k = 0; k < m_numLayers; ++k) run += sweepLayer(k, pools, sweeps, convergedSpeed);
+	for (int k = 0; k < m_numLayers; ++k) run += sweepLayer(k, pools, sweeps, convergedSpeed, false);
+	if (weightFeeling) findWelds(pools);
 	for (int k = m_numLayers - 1; k >= 0; --k)
 	{
-		if (weightFeeling) run += sweepLayer(k, pools, sweeps, convergedSpeed);
+		if (weightFeeling) run += sweepLayer(k, pools, sweeps, convergedSpeed, true);
 		deliver(k, pools.m_bodies);
 	}
 	m_stepLength = lineSearch(pools.m_bodies);

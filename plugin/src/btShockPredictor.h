@@ -16,6 +16,7 @@ subject to the following restrictions:
 #define BT_SHOCK_PROPAGATION_SHOCK_PREDICTOR_H
 
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
+#include "LinearMath/btMatrix3x3.h"
 
 class btStackLayers;
 
@@ -94,11 +95,14 @@ private:
 		btScalar m_scale;                     // s above; 1 when no side is fixated
 		btScalar m_withheld;                  // impulse not yet applied to the fixated side (N s)
 		btScalar m_start;                     // impulse before the passes (N s)
+		btScalar m_total;                     // D_A + D_B + c of the row
+		btScalar m_layerDelta;                // composite rows: impulse change not yet applied to the free body
+		int m_free;                           // the free side's solver body, -1 if no side is fixated
 		int m_kind;
 		int m_fixed;  // 0: none, 1: A, 2: B
 	};
 
-	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
+	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
 	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
@@ -114,6 +118,38 @@ private:
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
 	btAlignedObjectArray<int> m_count, m_cursor;
 	btScalar m_stepLength = 1;
+
+	// Welded composites (btWeldedComposites.cpp): in the down pass a free body carries the
+	// inertia of the bodies welded to it above (their rows to it active at three or more points).
+	struct Composite
+	{
+		Composite()
+			: m_center(0, 0, 0), m_invMass(0), m_invInertia(0, 0, 0, 0, 0, 0, 0, 0, 0), m_v0(0, 0, 0), m_w0(0, 0, 0), m_rootDv0(0, 0, 0), m_rootDw0(0, 0, 0), m_dv(0, 0, 0), m_dw(0, 0, 0), m_sweepDv(0, 0, 0), m_sweepDw(0, 0, 0), m_root(-1), m_first(0), m_end(0)
+		{
+		}
+		btVector3 m_center;
+		btScalar m_invMass;
+		btMatrix3x3 m_invInertia;
+		btVector3 m_v0, m_w0;          // rigid velocity of the members' momentum as the layer begins
+		btVector3 m_rootDv0, m_rootDw0;  // the root's solver-body delta that rigid velocity means
+		btVector3 m_dv, m_dw;          // rigid velocity change of the composite this layer
+		btVector3 m_sweepDv, m_sweepDw;  // the same at the start of the current sweep
+		int m_root, m_first, m_end;    // members m_members[m_first, m_end), the root first
+	};
+	void findWelds(const Pools& pools);
+	void formComposites(int layer, const Pools& pools);
+	btScalar solveCompositeRow(Row& row, Composite& composite, btAlignedObjectArray<btSolverBody>& bodies);
+	btScalar compositeMotion(int layer, const btAlignedObjectArray<btSolverBody>& bodies) const;
+	void finishComposites(int layer, const Pools& pools);
+	bool weldFactor(int body, const Pools& pools, struct btCholesky6& factor) const;
+	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
+	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
+	btAlignedObjectArray<int> m_parent;                       // per solver body: the body it is welded to, -1
+	btAlignedObjectArray<int> m_childStart, m_children;
+	btAlignedObjectArray<int> m_compositeOf;                  // per solver body: its composite as root this layer, -1
+	btAlignedObjectArray<Composite> m_composites;
+	btAlignedObjectArray<int> m_members;
+	btAlignedObjectArray<btVector3> m_weldForce, m_weldMoment;  // per solver body, back-substitution scratch
 };
 
 #endif  // BT_SHOCK_PROPAGATION_SHOCK_PREDICTOR_H
