@@ -102,6 +102,23 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 			const int layer = contact >= 0 && contact < numContacts ? contactRowLayer[contact] : -1;
 			if (layer >= 0 && layer < numLayers) addRow(c, &pools.m_contacts[contact], FRICTION + p, layer, pools.m_bodies, heightOfSolverBody);
 		}
+	bucketSupportRows(pools.m_bodies.size());
+}
+
+void btShockPredictor::bucketSupportRows(int numBodies)
+{
+	// Support rows of each body: the rows where it is the free side (all in its layer).
+	m_supportStart.resize(numBodies + 1);
+	for (int i = 0; i <= numBodies; ++i) m_supportStart[i] = 0;
+	for (int i = 0; i < m_rows.size(); ++i)
+		if (m_rows[i].m_free >= 0) ++m_supportStart[m_rows[i].m_free + 1];
+	for (int i = 0; i < numBodies; ++i) m_supportStart[i + 1] += m_supportStart[i];
+	m_supportRows.resize(m_supportStart[numBodies]);
+	m_count.resize(numBodies);
+	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
+	for (int i = 0; i < m_rows.size(); ++i)
+		if (m_rows[i].m_free >= 0) m_supportRows[m_count[m_rows[i].m_free]++] = i;
+
 }
 
 void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
@@ -207,6 +224,8 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	m_sweepAngular.resize(bodies.size());
 	if (composites) formComposites(layer, pools);
 	const bool anyComposite = composites && m_composites.size() > 0;
+	if (!anyComposite) m_composites.resize(0);
+	solveBlocks(layer, pools);
 	for (int s = 0; s < sweeps; ++s)
 	{
 		for (int i = 0; i < m_composites.size() && anyComposite; ++i)

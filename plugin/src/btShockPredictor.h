@@ -136,6 +136,13 @@ private:
 		btVector3 m_sweepDv, m_sweepDw;  // the same at the start of the current sweep
 		int m_root, m_first, m_end;    // members m_members[m_first, m_end), the root first
 	};
+	void bucketSupportRows(int numBodies);
+	// Support blocks (btSupportBlocks.cpp): each free body's pushing support rows solved at once.
+	void solveBlocks(int layer, const Pools& pools);
+	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
+	btAlignedObjectArray<char> m_blockDone;
+	btAlignedObjectArray<int> m_blockRows;
+	btAlignedObjectArray<btScalar> m_blockError;
 	void findWelds(const Pools& pools);
 	void formComposites(int layer, const Pools& pools);
 	btScalar solveCompositeRow(Row& row, Composite& composite, btAlignedObjectArray<btSolverBody>& bodies);

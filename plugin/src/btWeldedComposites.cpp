@@ -104,18 +104,6 @@ void btShockPredictor::findWelds(const Pools& pools)
 {
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
 	const int numBodies = bodies.size();
-	// Support rows of each body (rows where it is the free side), bucketed.
-	m_supportStart.resize(numBodies + 1);
-	for (int i = 0; i <= numBodies; ++i) m_supportStart[i] = 0;
-	for (int i = 0; i < m_rows.size(); ++i)
-		if (m_rows[i].m_free >= 0) ++m_supportStart[m_rows[i].m_free + 1];
-	for (int i = 0; i < numBodies; ++i) m_supportStart[i + 1] += m_supportStart[i];
-	m_supportRows.resize(m_supportStart[numBodies]);
-	m_count.resize(numBodies);
-	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
-	for (int i = 0; i < m_rows.size(); ++i)
-		if (m_rows[i].m_free >= 0) m_supportRows[m_count[m_rows[i].m_free]++] = i;
-
 	m_parent.resize(numBodies);
 	m_compositeOf.resize(numBodies);
 	m_weldForce.resize(numBodies);

@@ -1,0 +1,144 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+// Support blocks of the converging step's predictor (btShockPredictor.h).
+//
+// In a layer each free body (or the composite it carries) moves against fixated supports alone:
+// its support rows form one block of a body with six degrees of freedom. Row sweeps solve the
+// block at a rate set by how the rows couple through the body's turn: a brick loaded at one end
+// by the layers above needs tens to hundreds of sweeps to reach the predictor's convergence
+// speed, each leaving an error the next layer inherits. The block's pushing rows are solved at
+// once first: with e_r the rows' velocity errors and J_r their Jacobians on the body,
+//   du = A^-1 sum_r J_r e_r,   A = sum_r J_r J_r^T        (the least-squares velocity change),
+//   dlambda_r = J_r . A^-1 M du                            (the least-norm impulses giving it),
+// M the body's (or the composite's) mass and inertia. The impulses are projected on the rows'
+// bounds (pushing normals, friction within mu of the normal) and applied as the row sweeps apply
+// theirs (to the free side, the fixated side's share withheld); the sweeps then finish the block.
+
+#include "btShockPredictor.h"
+
+#include "btCholesky6.h"
+
+#include "BulletDynamics/Dynamics/btRigidBody.h"
+
+namespace
+{
+const btScalar kBlockMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: the block's rows span six directions
+}  // namespace
+
+void btShockPredictor::solveBlocks(int layer, const Pools& pools)
+{
+	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
+	m_blockDone.resize(bodies.size());
+	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
+		if (m_rows[i].m_free >= 0) m_blockDone[m_rows[i].m_free] = 0;
+	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
+	{
+		const int b = m_rows[i].m_free;
+		if (b < 0 || m_blockDone[b]) continue;
+		m_blockDone[b] = 1;
+		solveBlock(b, bodies);
+	}
+}
+
+void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bodies)
+{
+	btSolverBody& body = bodies[b];
+	const btRigidBody* rb = body.m_originalBody;
+	if (!rb || !(rb->getInvMass() > btScalar(0))) return;
+	if (!(body.m_linearFactor == btVector3(1, 1, 1) && body.m_angularFactor == btVector3(1, 1, 1))) return;
+	Composite* comp = (m_compositeOf.size() > b && m_compositeOf[b] >= 0) ? &m_composites[m_compositeOf[b]] : 0;
+	const btVector3 offset = comp ? body.getWorldTransform().getOrigin() - comp->m_center : btVector3(0, 0, 0);
+	const btScalar invMass = comp ? comp->m_invMass : rb->getInvMass();
+	const btMatrix3x3 invInertia = comp ? comp->m_invInertia : rb->getInvInertiaTensorWorld();
+	if (!(btFabs(invInertia.determinant()) > SIMD_EPSILON)) return;
+
+	// The pushing rows: their Jacobians on the body (or composite) and velocity errors.
+	btScalar A[6][6] = {};
+	btScalar g[6] = {};
+	m_blockRows.resize(0);
+	m_blockError.resize(0);
+	for (int k = m_supportStart[b]; k < m_supportStart[b + 1]; ++k)
+	{
+		const int ri = m_supportRows[k];
+		const Row& r = m_rows[ri];
+		const btSolverConstraint& c = *r.m_row;
+		const btSolverConstraint& contact = r.m_normal ? *r.m_normal : c;
+		if (!(contact.m_appliedImpulse > btScalar(0)) || c.m_jacDiagABInv == btScalar(0) || r.m_scale == btScalar(0)) continue;
+		const bool freeIsA = r.m_fixed == 2;
+		const btVector3& n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
+		const btVector3 arm = (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) + offset.cross(n);
+		btSolverBody& fixed = bodies[freeIsA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
+		const btScalar fixedVelocity = freeIsA ? c.m_contactNormal2.dot(fixed.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(fixed.internalGetDeltaAngularVelocity())
+											   : c.m_contactNormal1.dot(fixed.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(fixed.internalGetDeltaAngularVelocity());
+		const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(comp->m_rootDw0) + arm.dot(comp->m_dw)
+										   : n.dot(body.internalGetDeltaLinearVelocity()) + arm.dot(body.internalGetDeltaAngularVelocity());
+		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
+		const btScalar J[6] = {n.x(), n.y(), n.z(), arm.x(), arm.y(), arm.z()};
+		for (int i = 0; i < 6; ++i)
+		{
+			g[i] += J[i] * error;
+			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
+		}
+		m_blockRows.push_back(ri);
+		m_blockError.push_back(error);
+	}
+	if (m_blockRows.size() < 6) return;
+	btCholesky6 factor;
+	if (!factor.factor(A, btScalar(0), kBlockMinPivot, true)) return;
+	btScalar du[6], y[6];
+	factor.solve(g, du);
+	const btVector3 dv(du[0], du[1], du[2]), dw(du[3], du[4], du[5]);
+	const btVector3 p = dv / invMass, L = invInertia.inverse() * dw;
+	const btScalar momentum[6] = {p.x(), p.y(), p.z(), L.x(), L.y(), L.z()};
+	factor.solve(momentum, y);
+	const btVector3 yl(y[0], y[1], y[2]), ya(y[3], y[4], y[5]);
+
+	// Projected: normals first (they bound the friction rows), then friction.
+	for (int pass = 0; pass < 2; ++pass)
+		for (int k = 0; k < m_blockRows.size(); ++k)
+		{
+			Row& r = m_rows[m_blockRows[k]];
+			if ((pass == 0) != (r.m_normal == 0)) continue;
+			btSolverConstraint& c = *r.m_row;
+			const bool freeIsA = r.m_fixed == 2;
+			const btVector3& n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
+			const btVector3 arm = (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) + offset.cross(n);
+			btScalar lower = c.m_lowerLimit, upper = c.m_upperLimit;
+			if (r.m_normal)
+			{
+				const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
+				upper = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
+				lower = -upper;
+				c.m_lowerLimit = lower;
+				c.m_upperLimit = upper;
+			}
+			const btScalar target = c.m_appliedImpulse + n.dot(yl) + arm.dot(ya);
+			if (!(target == target)) continue;
+			const btScalar delta = btMax(lower, btMin(upper, target)) - c.m_appliedImpulse;
+			if (delta == btScalar(0)) continue;
+			c.m_appliedImpulse += delta;
+			r.m_withheld += delta;
+			if (comp)
+			{
+				comp->m_dv += n * (delta * comp->m_invMass);
+				comp->m_dw += comp->m_invInertia * (arm * delta);
+				r.m_layerDelta += delta;
+			}
+			else if (freeIsA)
+				body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, delta);
+			else
+				body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, delta);
+		}
+}
