@@ -133,7 +133,7 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody);
 	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;
-	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling);
+	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling, m_settings.m_diagnostics.m_predictorCycles);
 }
 
 void btShockPropagationConstraintSolver::correctVelocities(const btContactSolverInfo& info, const btContactSolverInfo& stepInfo)

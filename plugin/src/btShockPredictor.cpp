@@ -292,16 +292,27 @@ void btShockPredictor::deliver(int layer, btAlignedObjectArray<btSolverBody>& bo
 	}
 }
 
-int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling)
+int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling, int cycles)
 {
 	int run = 0;
 	recordStart(pools.m_bodies);
-	for (int k = 0; k < m_numLayers; ++k) run += sweepLayer(k, pools, sweeps, convergedSpeed, false);
-	if (weightFeeling) findWelds(pools);
-	for (int k = m_numLayers - 1; k >= 0; --k)
+	m_cycles = 0;
+	for (int cycle = 0; cycle < btMax(1, cycles); ++cycle)
 	{
-		if (weightFeeling) run += sweepLayer(k, pools, sweeps, convergedSpeed, true);
-		deliver(k, pools.m_bodies);
+		// A cycle after the first starts from the last one's velocities: each layer meets the
+		// final motion of the layers below it; once no layer needs more than one sweep, the
+		// passes have converged the coupled problem (every row holds, every impulse delivered).
+		int most = 0;
+		for (int k = 0; k < m_numLayers; ++k) most = btMax(most, sweepLayer(k, pools, sweeps, convergedSpeed, false));
+		if (weightFeeling) findWelds(pools);
+		for (int k = m_numLayers - 1; k >= 0; --k)
+		{
+			if (weightFeeling) most = btMax(most, sweepLayer(k, pools, sweeps, convergedSpeed, true));
+			deliver(k, pools.m_bodies);
+		}
+		run += most;
+		++m_cycles;
+		if (cycle > 0 && most <= 1) break;
 	}
 	m_stepLength = lineSearch(pools.m_bodies);
 	return run;

@@ -75,7 +75,9 @@ public:
 
 	/// Up pass then down pass (or delivery); at most sweeps per layer and pass, a layer ends once
 	/// a sweep changes no row's velocity by more than convergedSpeed (m/s). Returns sweeps run.
-	int predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling);
+	int predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling, int cycles);
+	/// Up-and-down cycles the last predict() ran.
+	int getCycles() const { return m_cycles; }
 
 	int getNumLayers() const { return m_numLayers; }
 	/// The step length the last predict() took along its passes' impulse changes (1: all of them).
@@ -118,6 +120,7 @@ private:
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
 	btAlignedObjectArray<int> m_count, m_cursor;
 	btScalar m_stepLength = 1;
+	int m_cycles = 0;
 
 	// Welded composites (btWeldedComposites.cpp): in the down pass a free body carries the
 	// inertia of the bodies welded to it above (their rows to it active at three or more points).
@@ -143,6 +146,7 @@ private:
 	btAlignedObjectArray<char> m_blockDone;
 	btAlignedObjectArray<int> m_blockRows;
 	btAlignedObjectArray<btScalar> m_blockError;
+	btAlignedObjectArray<const btSolverConstraint*> m_blockContacts;
 	void findWelds(const Pools& pools);
 	void formComposites(int layer, const Pools& pools);
 	btScalar solveCompositeRow(Row& row, Composite& composite, btAlignedObjectArray<btSolverBody>& bodies);

@@ -85,6 +85,7 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	if (!(settings.m_diagnostics.m_predictorConvergence >= 0) || !isFiniteScalar(settings.m_diagnostics.m_predictorConvergence))
 		m_settings.m_diagnostics.m_predictorConvergence = defaults.m_diagnostics.m_predictorConvergence;
 	m_settings.m_diagnostics.m_predictorIterations = btMax(0, settings.m_diagnostics.m_predictorIterations);
+	m_settings.m_diagnostics.m_predictorCycles = btMax(1, settings.m_diagnostics.m_predictorCycles);
 	if (!(settings.m_diagnostics.m_warmStartFactor <= 1) || !isFiniteScalar(settings.m_diagnostics.m_warmStartFactor)) m_settings.m_diagnostics.m_warmStartFactor = defaults.m_diagnostics.m_warmStartFactor;
 	if (!isFiniteScalar(settings.m_diagnostics.m_supportAngle)) m_settings.m_diagnostics.m_supportAngle = defaults.m_diagnostics.m_supportAngle;
 	if (!(settings.m_diagnostics.m_warmStartCoupling >= 0 && settings.m_diagnostics.m_warmStartCoupling <= 1)) m_settings.m_diagnostics.m_warmStartCoupling = defaults.m_diagnostics.m_warmStartCoupling;

@@ -64,18 +64,25 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 	const btMatrix3x3 invInertia = comp ? comp->m_invInertia : rb->getInvInertiaTensorWorld();
 	if (!(btFabs(invInertia.determinant()) > SIMD_EPSILON)) return;
 
-	// The pushing rows: their Jacobians on the body (or composite) and velocity errors.
+	// The rows that push or would push (and the friction rows of those): their Jacobians on the
+	// body (or composite) and velocity errors. A point Bullet just added starts from no impulse.
 	btScalar A[6][6] = {};
 	btScalar g[6] = {};
 	m_blockRows.resize(0);
 	m_blockError.resize(0);
+	m_blockContacts.resize(0);
 	for (int k = m_supportStart[b]; k < m_supportStart[b + 1]; ++k)
 	{
 		const int ri = m_supportRows[k];
 		const Row& r = m_rows[ri];
 		const btSolverConstraint& c = *r.m_row;
-		const btSolverConstraint& contact = r.m_normal ? *r.m_normal : c;
-		if (!(contact.m_appliedImpulse > btScalar(0)) || c.m_jacDiagABInv == btScalar(0) || r.m_scale == btScalar(0)) continue;
+		if (c.m_jacDiagABInv == btScalar(0) || r.m_scale == btScalar(0)) continue;
+		if (r.m_normal)
+		{
+			bool included = false;
+			for (int j = 0; j < m_blockContacts.size() && !included; ++j) included = m_blockContacts[j] == r.m_normal;
+			if (!included) continue;
+		}
 		const bool freeIsA = r.m_fixed == 2;
 		const btVector3& n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
 		const btVector3 arm = (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) + offset.cross(n);
@@ -85,6 +92,11 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 		const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(comp->m_rootDw0) + arm.dot(comp->m_dw)
 										   : n.dot(body.internalGetDeltaLinearVelocity()) + arm.dot(body.internalGetDeltaAngularVelocity());
 		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
+		if (!r.m_normal)
+		{
+			if (!(c.m_appliedImpulse > btScalar(0) || error > btScalar(0))) continue;
+			m_blockContacts.push_back(&c);
+		}
 		const btScalar J[6] = {n.x(), n.y(), n.z(), arm.x(), arm.y(), arm.z()};
 		for (int i = 0; i < 6; ++i)
 		{

@@ -202,6 +202,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_predictorConvergence), "pconv", [](double c) { return c >= 0; }, ">= 0"),
 		numberFlag("--predictor-sweeps", "N,...", "plugin: most sweeps per layer and pass of the converging step's predictor (default 200; section 4u)",
 				   diagnostic(&btShockPropagationDiagnostics::m_predictorIterations), "psweeps", [](double n) { return n >= 0; }, ">= 0"),
+		numberFlag("--predictor-cycles", "N,...", "plugin: most up-and-down cycles of the converging step's predictor (default 3; section 4u)",
+				   diagnostic(&btShockPropagationDiagnostics::m_predictorCycles), "pcycles", [](double n) { return n >= 1; }, ">= 1"),
 	};
 	return table;
 }
