@@ -185,17 +185,7 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& bodies)
 {
 	btSolverConstraint& c = *r.m_row;
-	if (r.m_normal)
-	{
-		// The bounds of a stock sweep: friction within mu times the normal impulse, rolling
-		// friction also within its own coefficient (btSequentialImpulseConstraintSolver).
-		// A contact that pushes no more carries no friction: the bound is then 0 (Bullet's sweep
-		// skips such a row and would leave its impulse in place).
-		const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
-		const btScalar bound = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
-		c.m_lowerLimit = -bound;
-		c.m_upperLimit = bound;
-	}
+	boundByNormal(r);
 	if (r.m_scale == btScalar(0)) return 0;
 	btSolverBody& a = bodies[c.m_solverBodyIdA];
 	btSolverBody& b = bodies[c.m_solverBodyIdB];

@@ -104,6 +104,18 @@ private:
 		int m_fixed;  // 0: none, 1: A, 2: B
 	};
 
+	/// Friction and rolling rows: their bounds from their contact's impulse, as a stock sweep sets
+	/// them, and 0 once the contact stops pushing (Bullet's sweep skips such a row instead and
+	/// would leave its impulse in place). Other rows keep theirs.
+	static void boundByNormal(Row& r)
+	{
+		if (!r.m_normal) return;
+		btSolverConstraint& c = *r.m_row;
+		const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
+		const btScalar bound = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
+		c.m_lowerLimit = -bound;
+		c.m_upperLimit = bound;
+	}
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);

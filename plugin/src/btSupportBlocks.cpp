@@ -127,18 +127,10 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			const bool freeIsA = r.m_fixed == 2;
 			const btVector3& n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
 			const btVector3 arm = (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) + offset.cross(n);
-			btScalar lower = c.m_lowerLimit, upper = c.m_upperLimit;
-			if (r.m_normal)
-			{
-				const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
-				upper = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
-				lower = -upper;
-				c.m_lowerLimit = lower;
-				c.m_upperLimit = upper;
-			}
+			boundByNormal(r);
 			const btScalar target = c.m_appliedImpulse + n.dot(yl) + arm.dot(ya);
 			if (!(target == target)) continue;
-			const btScalar delta = btMax(lower, btMin(upper, target)) - c.m_appliedImpulse;
+			const btScalar delta = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, target)) - c.m_appliedImpulse;
 			if (delta == btScalar(0)) continue;
 			c.m_appliedImpulse += delta;
 			r.m_withheld += delta;

@@ -214,13 +214,7 @@ void btShockPredictor::formComposites(int layer, const Pools& pools)
 btScalar btShockPredictor::solveCompositeRow(Row& r, Composite& comp, btAlignedObjectArray<btSolverBody>& bodies)
 {
 	btSolverConstraint& c = *r.m_row;
-	if (r.m_normal)
-	{
-		const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
-		const btScalar bound = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
-		c.m_lowerLimit = -bound;
-		c.m_upperLimit = bound;
-	}
+	boundByNormal(r);
 	if (r.m_scale == btScalar(0)) return 0;
 	btVector3 n, cr;
 	freeSide(c, r.m_fixed == 2, n, cr);
@@ -333,16 +327,8 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools)
 					Row& r = m_rows[m_supportRows[s]];
 					btSolverConstraint& c = *r.m_row;
 					if ((pass == 0) != (r.m_normal == 0)) continue;
-					btScalar lower = 0, upper = c.m_upperLimit;
-					if (r.m_normal)
-					{
-						const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
-						upper = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
-						lower = -upper;
-						c.m_lowerLimit = lower;
-						c.m_upperLimit = upper;
-					}
-					const btScalar clamped = btMax(lower, btMin(upper, btScalar(c.m_appliedImpulse)));
+					boundByNormal(r);
+					const btScalar clamped = btMax(r.m_normal ? c.m_lowerLimit : btScalar(0), btMin(c.m_upperLimit, btScalar(c.m_appliedImpulse)));
 					if (clamped != c.m_appliedImpulse) applyToBoth(r, clamped - c.m_appliedImpulse, bodies);
 				}
 		}
