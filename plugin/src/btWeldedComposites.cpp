@@ -21,8 +21,8 @@ subject to the following restrictions:
 // degrees of freedom and all push, the body above moves rigidly with the one below. So:
 //
 //   weld      body m is welded to its parent p when all of m's support rows go to the one
-//             dynamic body p and, after the up pass, the rows of its pushing points and their
-//             friction rows have full rank 6 (three or more points not on a line);
+//             dynamic body p, one of its points pushes after the up pass, and its rows have full
+//             rank 6 (three or more points not on a line);
 //   composite in the down pass, a free body b of the layer carries C(b): b and every body welded
 //             to it, recursively, with mass M, centre x_C and inertia I_C (parallel axes);
 //   solve     b's support rows are swept as rows of C(b): Jacobian (n, c + (x_b - x_C) x n),
@@ -81,15 +81,19 @@ void btShockPredictor::applyToBoth(Row& r, btScalar impulse, btAlignedObjectArra
 
 bool btShockPredictor::weldFactor(int body, const Pools& pools, btCholesky6& factor) const
 {
-	// A = sum over the body's support rows whose contact pushes of J_r J_r^T (the body's side).
+	// A = sum over the body's support rows of J_r J_r^T (the body's side): a pair in contact (one
+	// point pushing) whose points span the six directions. Which of its points push is the
+	// load's business (a resting box may carry its load on two of four corners).
 	btScalar A[6][6] = {};
-	int pushing = 0;
+	int pushing = 0, points = 0;
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
 		const Row& r = m_rows[m_supportRows[k]];
-		const btSolverConstraint& contact = r.m_normal ? *r.m_normal : *r.m_row;
-		if (!(contact.m_appliedImpulse > btScalar(0))) continue;
-		if (!r.m_normal) ++pushing;
+		if (!r.m_normal)
+		{
+			++points;
+			if (r.m_row->m_appliedImpulse > btScalar(0)) ++pushing;
+		}
 		btVector3 n, cr;
 		freeSide(*r.m_row, r.m_fixed == 2, n, cr);
 		const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
@@ -97,7 +101,7 @@ bool btShockPredictor::weldFactor(int body, const Pools& pools, btCholesky6& fac
 			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
 	}
 	(void)pools;
-	return pushing >= 3 && factor.factor(A, btScalar(0), kWeldMinPivot, true);
+	return pushing >= 1 && points >= 3 && factor.factor(A, btScalar(0), kWeldMinPivot, true);
 }
 
 void btShockPredictor::findWelds(const Pools& pools)
@@ -309,8 +313,6 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools)
 			for (int s = m_supportStart[m]; s < m_supportStart[m + 1]; ++s)
 			{
 				Row& r = m_rows[m_supportRows[s]];
-				const btSolverConstraint& contact = r.m_normal ? *r.m_normal : *r.m_row;
-				if (!(contact.m_appliedImpulse > btScalar(0))) continue;  // the rows weldFactor summed
 				btVector3 n, cr;
 				freeSide(*r.m_row, r.m_fixed == 2, n, cr);
 				const btScalar impulse = n.dot(yl) + cr.dot(ya);

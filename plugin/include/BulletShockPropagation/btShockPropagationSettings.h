@@ -264,8 +264,8 @@ struct btShockPropagationDiagnostics
 	/// friction warm-started, the shock-propagation predictor (btShockPredictor: fixated up pass,
 	/// weight-feeling down pass, every withheld impulse delivered, a kinetic-energy line search),
 	/// Bullet's own sweeps as the corrector (ceil(f N), ended once converged), Bullet's finish,
-	/// the layered position correction. Momentum is conserved by construction; it holds 19 of
-	/// the 26 truths, not the walls and round towers the default step holds, so it is off.
+	/// the layered position correction. Momentum is conserved by construction; it holds 23 of
+	/// the 26 truths, not the round tower the default step holds, so it is off.
 	bool m_convergingStep = false;
 
 	/// The converging step's predictor: a layer ends once a sweep moves no row's bodies by more
