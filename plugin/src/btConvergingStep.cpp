@@ -18,25 +18,26 @@ subject to the following restrictions:
 //
 //   setupRows          Bullet's rows for the step's dt, as a stock step sets them up (no
 //                      Baumgarte term, no split impulse: the position correction's job; warm start
-//                      unscaled; two friction rows per point), each contact row given its layer;
-//   predictVelocities  shock propagation (btShockPredictor): fixated up pass, weight-feeling down
-//                      pass, every withheld impulse delivered, a line search on the coupled objective;
-//   correctVelocities  Bullet's own sweeps over every row, every body free: projected Gauss-Seidel
-//                      of the coupled problem from the predictor's impulses, ceil(f N) at most,
-//                      ended once no row changes by more than the convergence speed;
+//                      unscaled; two friction rows per point; friction warm-started), each contact
+//                      row given its layer;
+//   predictVelocities  shock propagation (btShockPredictor): up-and-down cycles of a fixated up pass
+//                      and a weight-feeling down pass (support blocks, welded composites), every
+//                      withheld impulse delivered, then a kinetic-energy line search;
+//   correctVelocities  Bullet's own sweeps over every row, every body free, from the predictor's
+//                      impulses, ceil(f N) at most, ended once no row changes by more than the
+//                      convergence speed;
 //   finishRows         Bullet's finish (applied impulses, joint feedback and breaking, velocities);
 //   correctPositions   the layered position correction at CD(t) (btPositionCorrection).
 //
 // Every impulse of every stage acts on both bodies of its row once the predictor has delivered
 // what it withheld, so momentum and angular momentum change only through static and kinematic
-// bodies and external forces, and the corrector's fixed point is stock PGS's.
+// bodies and external forces.
 
 #include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
 
 #include "btBodyChecks.h"
 #include "btBoxFaceCorners.h"
 #include "btShockPredictor.h"
-
 
 #include <cmath>
 
@@ -130,6 +131,12 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 {
 	const btShockPredictor::Pools pools{m_tmpSolverBodyPool, m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool,
 										m_tmpSolverContactRollingFrictionConstraintPool};
+	// Stack height of each solver body; static and kinematic ones (Bullet's fixed body) are 0.
+	m_heightOfSolverBody.resize(m_tmpSolverBodyPool.size());
+	for (int i = 0; i < m_heightOfSolverBody.size(); ++i) m_heightOfSolverBody[i] = 0;
+	for (int i = 0; i < m_bodies.size(); ++i)
+		if (m_solverBodyOfNode[i] >= 0 && m_solverBodyOfNode[i] < m_heightOfSolverBody.size())
+			m_heightOfSolverBody[m_solverBodyOfNode[i]] = m_layers.getHeight(i);
 	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody);
 	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;

@@ -187,6 +187,8 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 	btSolverConstraint& c = *r.m_row;
 	boundByNormal(r);
 	if (r.m_scale == btScalar(0)) return 0;
+	// Summed term by term, A then B, as Bullet's kernel does (sideVelocity(A) + sideVelocity(B)
+	// rounds differently, and the pushed stack's truth turns on that rounding; design.md 4u).
 	btSolverBody& a = bodies[c.m_solverBodyIdA];
 	btSolverBody& b = bodies[c.m_solverBodyIdB];
 	const btScalar velocity = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity()) +
@@ -196,8 +198,8 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, sum));
 	delta = clamped - c.m_appliedImpulse;
 	c.m_appliedImpulse = clamped;
-	if (r.m_fixed != 1) a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, delta);
-	if (r.m_fixed != 2) b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, delta);
+	if (r.m_fixed != 1) applyToSide(c, true, delta, bodies);
+	if (r.m_fixed != 2) applyToSide(c, false, delta, bodies);
 	if (r.m_fixed) r.m_withheld += delta;
 	// The velocity change of the row (m/s): the impulse over its effective mass.
 	return c.m_jacDiagABInv != btScalar(0) ? btFabs(delta / (r.m_scale * c.m_jacDiagABInv)) : btScalar(0);
@@ -267,17 +269,7 @@ void btShockPredictor::deliver(int layer, btAlignedObjectArray<btSolverBody>& bo
 	{
 		Row& r = m_rows[i];
 		if (r.m_fixed == 0 || r.m_withheld == btScalar(0)) continue;
-		const btSolverConstraint& c = *r.m_row;
-		if (r.m_fixed == 1)
-		{
-			btSolverBody& a = bodies[c.m_solverBodyIdA];
-			a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, r.m_withheld);
-		}
-		else
-		{
-			btSolverBody& b = bodies[c.m_solverBodyIdB];
-			b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, r.m_withheld);
-		}
+		applyToSide(*r.m_row, r.m_fixed == 1, r.m_withheld, bodies);
 		r.m_withheld = 0;
 	}
 }
@@ -286,7 +278,6 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 {
 	int run = 0;
 	recordStart(pools.m_bodies);
-	m_cycles = 0;
 	for (int cycle = 0; cycle < btMax(1, cycles); ++cycle)
 	{
 		// A cycle after the first starts from the last one's velocities: each layer meets the
@@ -301,9 +292,8 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 			deliver(k, pools.m_bodies);
 		}
 		run += most;
-		++m_cycles;
 		if (cycle > 0 && most <= 1) break;
 	}
-	m_stepLength = lineSearch(pools.m_bodies);
+	lineSearch(pools.m_bodies);
 	return run;
 }

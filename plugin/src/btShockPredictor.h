@@ -76,12 +76,8 @@ public:
 	/// Up pass then down pass (or delivery); at most sweeps per layer and pass, a layer ends once
 	/// a sweep changes no row's velocity by more than convergedSpeed (m/s). Returns sweeps run.
 	int predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling, int cycles);
-	/// Up-and-down cycles the last predict() ran.
-	int getCycles() const { return m_cycles; }
 
 	int getNumLayers() const { return m_numLayers; }
-	/// The step length the last predict() took along its passes' impulse changes (1: all of them).
-	btScalar getStepLength() const { return m_stepLength; }
 
 private:
 	enum Kind
@@ -104,6 +100,28 @@ private:
 		int m_fixed;  // 0: none, 1: A, 2: B
 	};
 
+	/// Apply an impulse to one side of a row as Bullet's kernels do (sideA: body A with its
+	/// Jacobian, else body B with its own).
+	static void applyToSide(const btSolverConstraint& c, bool sideA, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies)
+	{
+		btSolverBody& body = bodies[sideA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+		body.internalApplyImpulse((sideA ? c.m_contactNormal1 : c.m_contactNormal2) * body.internalGetInvMass(),
+								  sideA ? c.m_angularComponentA : c.m_angularComponentB, impulse);
+	}
+	/// The velocity change of one side of a row along its Jacobian (Bullet's delta form).
+	static btScalar sideVelocity(const btSolverConstraint& c, bool sideA, btAlignedObjectArray<btSolverBody>& bodies)
+	{
+		btSolverBody& body = bodies[sideA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
+		return (sideA ? c.m_contactNormal1 : c.m_contactNormal2).dot(body.internalGetDeltaLinearVelocity()) +
+			   (sideA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(body.internalGetDeltaAngularVelocity());
+	}
+	/// The free side's Jacobian of a one-sided row (linear, angular about the free body's centre).
+	static void freeSide(const Row& r, btVector3& n, btVector3& cr)
+	{
+		const bool freeIsA = r.m_fixed == 2;
+		n = freeIsA ? r.m_row->m_contactNormal1 : r.m_row->m_contactNormal2;
+		cr = freeIsA ? r.m_row->m_relpos1CrossNormal : r.m_row->m_relpos2CrossNormal;
+	}
 	/// Friction and rolling rows: their bounds from their contact's impulse, as a stock sweep sets
 	/// them, and 0 once the contact stops pushing (Bullet's sweep skips such a row instead and
 	/// would leave its impulse in place). Other rows keep theirs.
@@ -131,8 +149,6 @@ private:
 	btAlignedObjectArray<Row> m_rows;        // by layer
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
 	btAlignedObjectArray<int> m_count, m_cursor;
-	btScalar m_stepLength = 1;
-	int m_cycles = 0;
 
 	// Welded composites (btWeldedComposites.cpp): in the down pass a free body carries the
 	// inertia of the bodies welded to it above (their rows to it active at three or more points).
@@ -164,7 +180,7 @@ private:
 	btScalar solveCompositeRow(Row& row, Composite& composite, btAlignedObjectArray<btSolverBody>& bodies);
 	btScalar compositeMotion(int layer, const btAlignedObjectArray<btSolverBody>& bodies) const;
 	void finishComposites(int layer, const Pools& pools);
-	bool weldFactor(int body, const Pools& pools, struct btCholesky6& factor) const;
+	bool weldFactor(int body, struct btCholesky6& factor) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
 	btAlignedObjectArray<int> m_parent;                       // per solver body: the body it is welded to, -1

@@ -204,12 +204,6 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 
 	m_solverBodyOfNode.resize(m_bodies.size());
 	for (int i = 0; i < m_bodies.size(); ++i) m_solverBodyOfNode[i] = m_bodies[i]->getCompanionId();
-	// Stack height of each solver body; static and kinematic ones (Bullet's fixed body) are 0.
-	m_heightOfSolverBody.resize(m_tmpSolverBodyPool.size());
-	for (int i = 0; i < m_heightOfSolverBody.size(); ++i) m_heightOfSolverBody[i] = 0;
-	for (int i = 0; i < m_bodies.size(); ++i)
-		if (m_solverBodyOfNode[i] >= 0 && m_solverBodyOfNode[i] < m_heightOfSolverBody.size())
-			m_heightOfSolverBody[m_solverBodyOfNode[i]] = m_layers.getHeight(i);
 }
 
 void btShockPropagationConstraintSolver::solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)

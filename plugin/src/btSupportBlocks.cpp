@@ -83,14 +83,11 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			for (int j = 0; j < m_blockContacts.size() && !included; ++j) included = m_blockContacts[j] == r.m_normal;
 			if (!included) continue;
 		}
-		const bool freeIsA = r.m_fixed == 2;
-		const btVector3& n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
-		const btVector3 arm = (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) + offset.cross(n);
-		btSolverBody& fixed = bodies[freeIsA ? c.m_solverBodyIdB : c.m_solverBodyIdA];
-		const btScalar fixedVelocity = freeIsA ? c.m_contactNormal2.dot(fixed.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(fixed.internalGetDeltaAngularVelocity())
-											   : c.m_contactNormal1.dot(fixed.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(fixed.internalGetDeltaAngularVelocity());
-		const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(comp->m_rootDw0) + arm.dot(comp->m_dw)
-										   : n.dot(body.internalGetDeltaLinearVelocity()) + arm.dot(body.internalGetDeltaAngularVelocity());
+		btVector3 n, cr;
+		freeSide(r, n, cr);
+		const btVector3 arm = cr + offset.cross(n);
+		const btScalar fixedVelocity = sideVelocity(c, r.m_fixed == 1, bodies);
+		const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + cr.dot(comp->m_rootDw0) + arm.dot(comp->m_dw) : sideVelocity(c, r.m_fixed == 2, bodies);
 		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
 		if (!r.m_normal)
 		{
@@ -124,9 +121,9 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			Row& r = m_rows[m_blockRows[k]];
 			if ((pass == 0) != (r.m_normal == 0)) continue;
 			btSolverConstraint& c = *r.m_row;
-			const bool freeIsA = r.m_fixed == 2;
-			const btVector3& n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
-			const btVector3 arm = (freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal) + offset.cross(n);
+			btVector3 n, cr;
+			freeSide(r, n, cr);
+			const btVector3 arm = cr + offset.cross(n);
 			boundByNormal(r);
 			const btScalar target = c.m_appliedImpulse + n.dot(yl) + arm.dot(ya);
 			if (!(target == target)) continue;
@@ -140,9 +137,7 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 				comp->m_dw += comp->m_invInertia * (arm * delta);
 				r.m_layerDelta += delta;
 			}
-			else if (freeIsA)
-				body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, delta);
 			else
-				body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, delta);
+				applyToSide(c, r.m_fixed == 2, delta, bodies);
 		}
 }

@@ -46,13 +46,6 @@ namespace
 {
 const btScalar kWeldMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: rows of a weld span six directions
 
-// The free side's Jacobian of a row (linear, angular about the free body's centre).
-void freeSide(const btSolverConstraint& c, bool freeIsA, btVector3& n, btVector3& cr)
-{
-	n = freeIsA ? c.m_contactNormal1 : c.m_contactNormal2;
-	cr = freeIsA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal;
-}
-
 btVector3 linearVelocity(btSolverBody& body)
 {
 	return body.m_linearVelocity + body.m_externalForceImpulse + body.internalGetDeltaLinearVelocity();
@@ -71,15 +64,12 @@ bool unitFactors(const btSolverBody& body)
 
 void btShockPredictor::applyToBoth(Row& r, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies)
 {
-	btSolverConstraint& c = *r.m_row;
-	c.m_appliedImpulse += impulse;
-	btSolverBody& a = bodies[c.m_solverBodyIdA];
-	btSolverBody& b = bodies[c.m_solverBodyIdB];
-	a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, impulse);
-	b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, impulse);
+	r.m_row->m_appliedImpulse += impulse;
+	applyToSide(*r.m_row, true, impulse, bodies);
+	applyToSide(*r.m_row, false, impulse, bodies);
 }
 
-bool btShockPredictor::weldFactor(int body, const Pools& pools, btCholesky6& factor) const
+bool btShockPredictor::weldFactor(int body, btCholesky6& factor) const
 {
 	// A = sum over the body's support rows of J_r J_r^T (the body's side): a pair in contact (one
 	// point pushing) whose points span the six directions. Which of its points push is the
@@ -95,12 +85,11 @@ bool btShockPredictor::weldFactor(int body, const Pools& pools, btCholesky6& fac
 			if (r.m_row->m_appliedImpulse > btScalar(0)) ++pushing;
 		}
 		btVector3 n, cr;
-		freeSide(*r.m_row, r.m_fixed == 2, n, cr);
+		freeSide(r, n, cr);
 		const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
 		for (int i = 0; i < 6; ++i)
 			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
 	}
-	(void)pools;
 	return pushing >= 1 && points >= 3 && factor.factor(A, btScalar(0), kWeldMinPivot, true);
 }
 
@@ -129,7 +118,7 @@ void btShockPredictor::findWelds(const Pools& pools)
 		}
 		if (!single || parent < 0 || !bodies[parent].m_originalBody || !unitFactors(bodies[parent])) continue;
 		btCholesky6 factor;
-		if (weldFactor(i, pools, factor)) m_parent[i] = parent;
+		if (weldFactor(i, factor)) m_parent[i] = parent;
 	}
 	// Children of each body.
 	m_childStart.resize(numBodies + 1);
@@ -221,15 +210,11 @@ btScalar btShockPredictor::solveCompositeRow(Row& r, Composite& comp, btAlignedO
 	boundByNormal(r);
 	if (r.m_scale == btScalar(0)) return 0;
 	btVector3 n, cr;
-	freeSide(c, r.m_fixed == 2, n, cr);
+	freeSide(r, n, cr);
 	const btVector3 arm = cr + (bodies[r.m_free].getWorldTransform().getOrigin() - comp.m_center).cross(n);
 	// The free side moves with the composite (its rigid motion at the root, in Bullet's delta
 	// form); the fixated side with its own velocity.
-	btSolverBody& fixed = bodies[r.m_fixed == 1 ? c.m_solverBodyIdA : c.m_solverBodyIdB];
-	const btVector3& fixedN = r.m_fixed == 1 ? c.m_contactNormal1 : c.m_contactNormal2;
-	const btVector3& fixedC = r.m_fixed == 1 ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal;
-	const btScalar velocity = fixedN.dot(fixed.internalGetDeltaLinearVelocity()) + fixedC.dot(fixed.internalGetDeltaAngularVelocity()) + n.dot(comp.m_rootDv0) +
-							  cr.dot(comp.m_rootDw0) + n.dot(comp.m_dv) + arm.dot(comp.m_dw);
+	const btScalar velocity = sideVelocity(c, r.m_fixed == 1, bodies) + n.dot(comp.m_rootDv0) + cr.dot(comp.m_rootDw0) + n.dot(comp.m_dv) + arm.dot(comp.m_dw);
 	const btScalar cfm = c.m_cfm / c.m_jacDiagABInv;
 	const btScalar effective = n.length2() * comp.m_invMass + arm.dot(comp.m_invInertia * arm) + cfm;
 	if (!(effective > btScalar(0))) return 0;
@@ -254,7 +239,7 @@ btScalar btShockPredictor::compositeMotion(int layer, const btAlignedObjectArray
 		if (r.m_free < 0 || m_compositeOf[r.m_free] < 0) continue;
 		const Composite& comp = m_composites[m_compositeOf[r.m_free]];
 		btVector3 n, cr;
-		freeSide(*r.m_row, r.m_fixed == 2, n, cr);
+		freeSide(r, n, cr);
 		const btVector3 arm = cr + (bodies[r.m_free].getWorldTransform().getOrigin() - comp.m_center).cross(n);
 		largest = btMax(largest, btFabs(n.dot(comp.m_dv - comp.m_sweepDv) + arm.dot(comp.m_dw - comp.m_sweepDw)));
 	}
@@ -269,12 +254,7 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools)
 	{
 		Row& r = m_rows[i];
 		if (r.m_layerDelta == btScalar(0)) continue;
-		const btSolverConstraint& c = *r.m_row;
-		btSolverBody& body = bodies[r.m_free];
-		if (r.m_fixed == 2)
-			body.internalApplyImpulse(c.m_contactNormal1 * body.internalGetInvMass(), c.m_angularComponentA, r.m_layerDelta);
-		else
-			body.internalApplyImpulse(c.m_contactNormal2 * body.internalGetInvMass(), c.m_angularComponentB, r.m_layerDelta);
+		applyToSide(*r.m_row, r.m_fixed == 2, r.m_layerDelta, bodies);
 		r.m_layerDelta = 0;
 	}
 	for (int ci = 0; ci < m_composites.size(); ++ci)
@@ -305,7 +285,7 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools)
 			const int m = m_members[k];
 			// Least-norm impulses of the weld rows with that force and moment on m.
 			btCholesky6 factor;
-			if (!weldFactor(m, pools, factor)) continue;
+			if (!weldFactor(m, factor)) continue;
 			const btScalar wrench[6] = {m_weldForce[m].x(), m_weldForce[m].y(), m_weldForce[m].z(), m_weldMoment[m].x(), m_weldMoment[m].y(), m_weldMoment[m].z()};
 			btScalar y[6];
 			factor.solve(wrench, y);
@@ -314,7 +294,7 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools)
 			{
 				Row& r = m_rows[m_supportRows[s]];
 				btVector3 n, cr;
-				freeSide(*r.m_row, r.m_fixed == 2, n, cr);
+				freeSide(r, n, cr);
 				const btScalar impulse = n.dot(yl) + cr.dot(ya);
 				if (impulse == impulse) applyToBoth(r, impulse, bodies);
 			}
