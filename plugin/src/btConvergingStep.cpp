@@ -17,12 +17,13 @@ subject to the following restrictions:
 // a list of stages called in order:
 //
 //   setupRows          Bullet's rows for the step's dt, as a stock step sets them up (no
-//                      Baumgarte term, no split impulse: the position correction's job; warm start
-//                      unscaled; two friction rows per point; friction warm-started), each contact
-//                      row given its layer;
+//                      Baumgarte term, no split impulse: the position correction's job; two
+//                      friction rows per point), every row from zero impulse, each contact row
+//                      given its layer;
 //   predictVelocities  shock propagation (btShockPredictor): up-and-down cycles of a fixated up pass
-//                      and a weight-feeling down pass (support blocks, welded composites), every
-//                      withheld impulse delivered, then a kinetic-energy line search;
+//                      and a weight-feeling down pass (support blocks; a body its supports do not
+//                      hold carries what is welded to it), every withheld impulse delivered, then
+//                      a kinetic-energy line search;
 //   correctVelocities  Bullet's own sweeps over every row, every body free, from the predictor's
 //                      impulses, ceil(f N) at most, ended once no row changes by more than the
 //                      convergence speed;
@@ -62,10 +63,15 @@ void btShockPropagationConstraintSolver::solveConverging(const btContactSolverIn
 
 btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
 {
+	// Bullet's setup, every row starting from zero impulse: the predictor builds the step's
+	// impulses layer by layer from the bottom, and a warm start from last step's points is not the
+	// last step's solution once Bullet has replaced some of them (docs/design.md, section 4u).
+	// The app's SOLVER_USE_WARMSTARTING is kept: with it Bullet's finish writes each point's
+	// impulses (getAppliedImpulse), as in a stock step.
 	btContactSolverInfo stepInfo = info;
 	stepInfo.m_erp2 = btScalar(0);
 	stepInfo.m_splitImpulse = false;
-	stepInfo.m_warmstartingFactor = btScalar(1);
+	stepInfo.m_warmstartingFactor = btScalar(0);
 	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	if (m_settings.m_keepBoxFaceCorners)
 	{
@@ -75,56 +81,9 @@ btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContac
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
 	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;
-	// Last step's friction impulse of each point, as a vector: finishRows leaves it in the point as
-	// components along btPlaneSpace1 of the point's normal (Bullet keeps the lateral impulses when
-	// it refreshes a point, not the directions; its setup starts friction rows from zero).
-	m_frictionStart.resize(m_manifolds.size() + 1);
-	m_lastFriction.resize(0);
-	for (int i = 0; i < m_manifolds.size(); ++i)
-	{
-		m_frictionStart[i] = m_lastFriction.size();
-		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
-		{
-			const btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
-			btVector3 t1, t2;
-			btPlaneSpace1(cp.m_normalWorldOnB, t1, t2);
-			btVector3 f = t1 * cp.m_appliedImpulseLateral1 + t2 * cp.m_appliedImpulseLateral2;
-			if (!(f.fuzzyZero() || f.length2() < SIMD_INFINITY)) f.setZero();  // NaN or Inf: no warm start
-			m_lastFriction.push_back(f);
-		}
-	}
-	m_frictionStart[m_manifolds.size()] = m_lastFriction.size();
 	solveGroupCacheFriendlySetup(bodies, m_bodies.size(), manifolds, m_manifolds.size(), constraints, m_constraints.size(), stepInfo, debugDrawer);
 	assignRowsToLayers();
-	if (stepInfo.m_solverMode & SOLVER_USE_WARMSTARTING) warmStartFriction();
 	return stepInfo;
-}
-
-void btShockPropagationConstraintSolver::warmStartFriction()
-{
-	// Each friction row starts from last step's friction impulse projected on its direction,
-	// within its bound for the warm-started normal impulse, applied to both bodies (as Bullet's
-	// setup does for the normal rows). Without it a resting body whose normal impulses were
-	// balanced by friction last step starts the step turning.
-	for (int r = 0; r < m_tmpSolverContactFrictionConstraintPool.size(); ++r)
-	{
-		btSolverConstraint& c = m_tmpSolverContactFrictionConstraintPool[r];
-		const int contact = c.m_frictionIndex;
-		if (contact < 0 || contact >= m_tmpSolverContactConstraintPool.size()) continue;
-		const int manifold = m_contactRowManifold[contact];
-		if (manifold < 0) continue;
-		const btManifoldPoint* first = &m_manifolds[manifold]->getContactPoint(0);
-		const int point = int(static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[contact].m_originalContactPoint) - first);
-		if (point < 0 || m_frictionStart[manifold] + point >= m_frictionStart[manifold + 1]) continue;
-		const btScalar bound = c.m_friction * btMax(btScalar(0), m_tmpSolverContactConstraintPool[contact].m_appliedImpulse);
-		const btScalar impulse = btMax(-bound, btMin(bound, m_lastFriction[m_frictionStart[manifold] + point].dot(c.m_contactNormal1)));
-		if (impulse == btScalar(0)) continue;
-		c.m_appliedImpulse = impulse;
-		btSolverBody& a = m_tmpSolverBodyPool[c.m_solverBodyIdA];
-		btSolverBody& b = m_tmpSolverBodyPool[c.m_solverBodyIdB];
-		a.internalApplyImpulse(c.m_contactNormal1 * a.internalGetInvMass(), c.m_angularComponentA, impulse);
-		b.internalApplyImpulse(c.m_contactNormal2 * b.internalGetInvMass(), c.m_angularComponentB, impulse);
-	}
 }
 
 void btShockPropagationConstraintSolver::predictVelocities(const btContactSolverInfo& info)
@@ -169,29 +128,5 @@ void btShockPropagationConstraintSolver::correctVelocities(const btContactSolver
 
 void btShockPropagationConstraintSolver::finishRows(const btContactSolverInfo& stepInfo)
 {
-	// Each point's friction impulse, re-expressed along btPlaneSpace1 of its normal (the same
-	// impulse, the directions stored with it), so that the next step can warm-start it.
-	const bool two = (stepInfo.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
-	m_frictionPoints.resize(0);
-	m_frictionImpulses.resize(0);
-	for (int r = 0; r < m_tmpSolverContactConstraintPool.size(); ++r)
-	{
-		const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[r];
-		btManifoldPoint* cp = static_cast<btManifoldPoint*>(contact.m_originalContactPoint);
-		const int first = contact.m_frictionIndex;
-		if (!cp || first < 0 || first + (two ? 1 : 0) >= m_tmpSolverContactFrictionConstraintPool.size()) continue;
-		const btSolverConstraint& f1 = m_tmpSolverContactFrictionConstraintPool[first];
-		btVector3 f = f1.m_contactNormal1 * f1.m_appliedImpulse;
-		if (two) f += m_tmpSolverContactFrictionConstraintPool[first + 1].m_contactNormal1 * m_tmpSolverContactFrictionConstraintPool[first + 1].m_appliedImpulse;
-		m_frictionPoints.push_back(cp);
-		m_frictionImpulses.push_back(f);
-	}
 	solveGroupCacheFriendlyFinish(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(), stepInfo);
-	for (int i = 0; i < m_frictionPoints.size(); ++i)
-	{
-		btManifoldPoint* cp = m_frictionPoints[i];
-		btPlaneSpace1(cp->m_normalWorldOnB, cp->m_lateralFrictionDir1, cp->m_lateralFrictionDir2);
-		cp->m_appliedImpulseLateral1 = m_frictionImpulses[i].dot(cp->m_lateralFrictionDir1);
-		cp->m_appliedImpulseLateral2 = m_frictionImpulses[i].dot(cp->m_lateralFrictionDir2);
-	}
 }

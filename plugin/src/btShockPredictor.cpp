@@ -207,6 +207,37 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 
 int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
 {
+	// Each free body first against its fixated supports alone; a body its supports do not hold
+	// (it slides, tips or lifts) then carries what is welded to it, and the layer is swept again.
+	int run = sweepRows(layer, pools, sweeps, convergedSpeed, false);
+	if (composites)
+	{
+		formComposites(layer, pools, convergedSpeed);
+		if (m_composites.size()) run += sweepRows(layer, pools, sweeps, convergedSpeed, true);
+	}
+	return run;
+}
+
+bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed)
+{
+	// Held: every support row's relative velocity (whole velocities, not Bullet's deltas) within
+	// the convergence speed.
+	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
+	{
+		const btSolverConstraint& c = *m_rows[m_supportRows[k]].m_row;
+		btSolverBody& a = bodies[c.m_solverBodyIdA];
+		btSolverBody& b = bodies[c.m_solverBodyIdB];
+		const btScalar v = c.m_contactNormal1.dot(a.m_linearVelocity + a.m_externalForceImpulse + a.internalGetDeltaLinearVelocity()) +
+						   c.m_relpos1CrossNormal.dot(a.m_angularVelocity + a.m_externalTorqueImpulse + a.internalGetDeltaAngularVelocity()) +
+						   c.m_contactNormal2.dot(b.m_linearVelocity + b.m_externalForceImpulse + b.internalGetDeltaLinearVelocity()) +
+						   c.m_relpos2CrossNormal.dot(b.m_angularVelocity + b.m_externalTorqueImpulse + b.internalGetDeltaAngularVelocity());
+		if (btFabs(v) > speed) return false;
+	}
+	return true;
+}
+
+int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
+{
 	const int begin = m_layerStart[layer];
 	const int end = m_layerStart[layer + 1];
 	if (begin == end) return 0;
@@ -214,7 +245,6 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
 	m_sweepLinear.resize(bodies.size());
 	m_sweepAngular.resize(bodies.size());
-	if (composites) formComposites(layer, pools);
 	const bool anyComposite = composites && m_composites.size() > 0;
 	if (!anyComposite) m_composites.resize(0);
 	solveBlocks(layer, pools);

@@ -135,6 +135,8 @@ private:
 		c.m_upperLimit = bound;
 	}
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
+	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
+	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
 	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
@@ -173,10 +175,10 @@ private:
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<char> m_blockDone;
 	btAlignedObjectArray<int> m_blockRows;
-	btAlignedObjectArray<btScalar> m_blockError;
+	btAlignedObjectArray<btScalar> m_blockError, m_blockDelta;
 	btAlignedObjectArray<const btSolverConstraint*> m_blockContacts;
 	void findWelds(const Pools& pools);
-	void formComposites(int layer, const Pools& pools);
+	void formComposites(int layer, const Pools& pools, btScalar heldSpeed);
 	btScalar solveCompositeRow(Row& row, Composite& composite, btAlignedObjectArray<btSolverBody>& bodies);
 	btScalar compositeMotion(int layer, const btAlignedObjectArray<btSolverBody>& bodies) const;
 	void finishComposites(int layer, const Pools& pools);

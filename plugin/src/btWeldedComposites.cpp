@@ -132,7 +132,7 @@ void btShockPredictor::findWelds(const Pools& pools)
 		if (m_parent[i] >= 0) m_children[m_count[m_parent[i]]++] = i;
 }
 
-void btShockPredictor::formComposites(int layer, const Pools& pools)
+void btShockPredictor::formComposites(int layer, const Pools& pools, btScalar heldSpeed)
 {
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
 	for (int i = 0; i < m_composites.size(); ++i) m_compositeOf[m_composites[i].m_root] = -1;
@@ -142,6 +142,7 @@ void btShockPredictor::formComposites(int layer, const Pools& pools)
 	{
 		const int root = m_rows[i].m_free;
 		if (root < 0 || m_compositeOf[root] >= 0 || m_childStart[root] == m_childStart[root + 1]) continue;
+		if (heldBySupports(root, bodies, heldSpeed)) continue;
 		Composite comp;
 		comp.m_root = root;
 		comp.m_first = m_members.size();

@@ -120,7 +120,6 @@ private:
 	void predictVelocities(const btContactSolverInfo& info);
 	void correctVelocities(const btContactSolverInfo& info, const btContactSolverInfo& stepInfo);
 	void finishRows(const btContactSolverInfo& stepInfo);
-	void warmStartFriction();
 	void assignRowsToLayers();
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
 	void limitWarmStart(const btContactSolverInfo& info);
@@ -149,10 +148,6 @@ private:
 	btShockPredictor* m_predictor;
 	btAlignedObjectArray<int> m_heightOfSolverBody;  // converging step: stack height of each solver body
 	btAlignedObjectArray<int> m_contactRowManifold;  // manifold of each contact row, -1 if none
-	btAlignedObjectArray<btVector3> m_lastFriction;  // converging step: last step's friction impulse per point (N s)
-	btAlignedObjectArray<int> m_frictionStart;       // first entry of each manifold in m_lastFriction
-	btAlignedObjectArray<btManifoldPoint*> m_frictionPoints;  // finishRows: the points and their friction impulses
-	btAlignedObjectArray<btVector3> m_frictionImpulses;
 
 	// Per step, read-only record for getLayeredBody (capacity kept across steps).
 	btAlignedObjectArray<const btCollisionObject*> m_layeredBodies;
