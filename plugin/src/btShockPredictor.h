@@ -175,7 +175,7 @@ private:
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<char> m_blockDone;
 	btAlignedObjectArray<int> m_blockRows;
-	btAlignedObjectArray<btScalar> m_blockError, m_blockDelta;
+	btAlignedObjectArray<btScalar> m_blockError;
 	btAlignedObjectArray<const btSolverConstraint*> m_blockContacts;
 	void findWelds(const Pools& pools);
 	void formComposites(int layer, const Pools& pools, btScalar heldSpeed);

@@ -114,15 +114,7 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 	factor.solve(momentum, y);
 	const btVector3 yl(y[0], y[1], y[2]), ya(y[3], y[4], y[5]);
 
-	// Projected: normals first (they bound the friction rows), then friction. The projected
-	// impulses dl no longer give du; they are taken along alpha dl, alpha in [0, 1] minimising the
-	// block's objective (the body's QP with its supports fixated),
-	//   phi(alpha) = alpha^2 / 2 du'.M du' - alpha sum_r dl_r e_r,   du' = M^-1 sum_r J_r dl_r,
-	// so a block step never raises it (it is the exact step when nothing was clipped). Every
-	// alpha keeps the impulses within their bounds: the friction cone is convex.
-	m_blockDelta.resize(m_blockRows.size());
-	btVector3 linear(0, 0, 0), angular(0, 0, 0);  // sum_r J_r dl_r
-	btScalar gain = 0;                            // sum_r dl_r e_r
+	// Projected: normals first (they bound the friction rows), then friction.
 	for (int pass = 0; pass < 2; ++pass)
 		for (int k = 0; k < m_blockRows.size(); ++k)
 		{
@@ -134,36 +126,18 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			const btVector3 arm = cr + offset.cross(n);
 			boundByNormal(r);
 			const btScalar target = c.m_appliedImpulse + n.dot(yl) + arm.dot(ya);
-			btScalar delta = target == target ? btMax(c.m_lowerLimit, btMin(c.m_upperLimit, target)) - c.m_appliedImpulse : btScalar(0);
-			if (!(delta == delta)) delta = 0;
-			m_blockDelta[k] = delta;
-			c.m_appliedImpulse += delta;  // bounds the friction rows of pass 1; undone below
-			linear += n * delta;
-			angular += arm * delta;
-			gain += delta * m_blockError[k];
+			if (!(target == target)) continue;
+			const btScalar delta = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, target)) - c.m_appliedImpulse;
+			if (delta == btScalar(0)) continue;
+			c.m_appliedImpulse += delta;
+			r.m_withheld += delta;
+			if (comp)
+			{
+				comp->m_dv += n * (delta * comp->m_invMass);
+				comp->m_dw += comp->m_invInertia * (arm * delta);
+				r.m_layerDelta += delta;
+			}
+			else
+				applyToSide(c, r.m_fixed == 2, delta, bodies);
 		}
-	const btVector3 dvBlock = linear * invMass, dwBlock = invInertia * angular;
-	const btScalar curvature = dvBlock.dot(linear) + dwBlock.dot(angular);
-	const btScalar alpha = gain > btScalar(0) && curvature > btScalar(0) ? btMin(btScalar(1), gain / curvature) : btScalar(0);
-	for (int k = 0; k < m_blockRows.size(); ++k)
-	{
-		Row& r = m_rows[m_blockRows[k]];
-		btSolverConstraint& c = *r.m_row;
-		c.m_appliedImpulse -= m_blockDelta[k];
-		const btScalar delta = alpha * m_blockDelta[k];
-		if (delta == btScalar(0)) continue;
-		btVector3 n, cr;
-		freeSide(r, n, cr);
-		c.m_appliedImpulse += delta;
-		r.m_withheld += delta;
-		if (comp)
-		{
-			const btVector3 arm = cr + offset.cross(n);
-			comp->m_dv += n * (delta * comp->m_invMass);
-			comp->m_dw += comp->m_invInertia * (arm * delta);
-			r.m_layerDelta += delta;
-		}
-		else
-			applyToSide(c, r.m_fixed == 2, delta, bodies);
-	}
 }
