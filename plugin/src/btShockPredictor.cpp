@@ -20,6 +20,7 @@ subject to the following restrictions:
 
 namespace
 {
+const btScalar kMaxFixationScale = btScalar(1) / btSqrt(SIMD_EPSILON);  // largest s a row is fixated at (btGroundedFixation.cpp)
 // J W J^T of one side of a row, as Bullet applies impulses (btSolverBody::internalApplyImpulse).
 btScalar sideTerm(const btVector3& normal, const btVector3& crossNormal, const btVector3& angularComponent, const btSolverBody& body)
 {
@@ -53,11 +54,20 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 		const btScalar cfm = c.m_cfm / c.m_jacDiagABInv;
 		const btScalar freeTerm = (fixA ? dB : dA) + cfm;
 		const btScalar total = dA + dB + cfm;
-		r.m_fixed = fixA ? 1 : 2;
-		r.m_free = fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA;
-		r.m_total = total;
 		// A free side that no impulse can move (a zero-mass axis): the row has nothing to solve.
-		r.m_scale = freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0);
+		const btScalar scale = freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0);
+		// s is the free body's mass over the fixated one's along the row, plus one: the fixated
+		// body's velocity carries s times the free one's change until its own supports take it
+		// back, so the rounding of that cancellation grows with s. Up to 1 / sqrt(epsilon) (2.9e3
+		// in float, 6.7e7 in double) it stays below sqrt(epsilon) of the load; beyond, the row is
+		// solved with both bodies free, as Bullet does.
+		if (scale <= kMaxFixationScale)
+		{
+			r.m_fixed = fixA ? 1 : 2;
+			r.m_free = fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA;
+			r.m_total = total;
+			r.m_scale = scale;
+		}
 	}
 	m_rows[m_cursor[layer * 3 + kind]++] = r;
 }
@@ -103,6 +113,8 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 			if (layer >= 0 && layer < numLayers) addRow(c, &pools.m_contacts[contact], FRICTION + p, layer, pools.m_bodies, heightOfSolverBody);
 		}
 	bucketSupportRows(pools.m_bodies.size());
+	groundRows(pools.m_bodies, heightOfSolverBody);
+	bucketSupportRows(pools.m_bodies.size());
 }
 
 void btShockPredictor::bucketSupportRows(int numBodies)
@@ -118,6 +130,16 @@ void btShockPredictor::bucketSupportRows(int numBodies)
 	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
 	for (int i = 0; i < m_rows.size(); ++i)
 		if (m_rows[i].m_free >= 0) m_supportRows[m_count[m_rows[i].m_free]++] = i;
+	// Load rows of each body: the rows where it is the fixated side (the bodies resting on it).
+	m_loadStart.resize(numBodies + 1);
+	for (int i = 0; i <= numBodies; ++i) m_loadStart[i] = 0;
+	for (int i = 0; i < m_rows.size(); ++i)
+		if (m_rows[i].m_fixed) ++m_loadStart[fixedSide(m_rows[i]) + 1];
+	for (int i = 0; i < numBodies; ++i) m_loadStart[i + 1] += m_loadStart[i];
+	m_loadRows.resize(m_loadStart[numBodies]);
+	for (int i = 0; i < numBodies; ++i) m_count[i] = m_loadStart[i];
+	for (int i = 0; i < m_rows.size(); ++i)
+		if (m_rows[i].m_fixed) m_loadRows[m_count[fixedSide(m_rows[i])]++] = i;
 
 }
 
@@ -208,33 +230,19 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
 {
 	// Each free body first against its fixated supports alone; a body its supports do not hold
-	// (it slides, tips or lifts) then carries what is welded to it, and the layer is swept again.
+	// (it slides, tips or lifts) then carries what is welded to it, and the layer is swept again;
+	// one that carries nothing welded is swept with the bodies resting on it (both sides free).
 	int run = sweepRows(layer, pools, sweeps, convergedSpeed, false);
 	if (composites)
 	{
 		formComposites(layer, pools, convergedSpeed);
 		if (m_composites.size()) run += sweepRows(layer, pools, sweeps, convergedSpeed, true);
+		run += sweepWithLoads(layer, pools, sweeps, convergedSpeed);
 	}
 	return run;
 }
 
-bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed)
-{
-	// Held: every support row's relative velocity (whole velocities, not Bullet's deltas) within
-	// the convergence speed.
-	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
-	{
-		const btSolverConstraint& c = *m_rows[m_supportRows[k]].m_row;
-		btSolverBody& a = bodies[c.m_solverBodyIdA];
-		btSolverBody& b = bodies[c.m_solverBodyIdB];
-		const btScalar v = c.m_contactNormal1.dot(a.m_linearVelocity + a.m_externalForceImpulse + a.internalGetDeltaLinearVelocity()) +
-						   c.m_relpos1CrossNormal.dot(a.m_angularVelocity + a.m_externalTorqueImpulse + a.internalGetDeltaAngularVelocity()) +
-						   c.m_contactNormal2.dot(b.m_linearVelocity + b.m_externalForceImpulse + b.internalGetDeltaLinearVelocity()) +
-						   c.m_relpos2CrossNormal.dot(b.m_angularVelocity + b.m_externalTorqueImpulse + b.internalGetDeltaAngularVelocity());
-		if (btFabs(v) > speed) return false;
-	}
-	return true;
-}
+
 
 int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
 {

@@ -137,6 +137,10 @@ private:
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
+	bool supportsSpanSix(int body) const;
+	int sweepWithLoads(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
+	btScalar solveCoupledRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
+	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
 	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
@@ -170,6 +174,8 @@ private:
 		int m_root, m_first, m_end;    // members m_members[m_first, m_end), the root first
 	};
 	void bucketSupportRows(int numBodies);
+	void groundRows(const btAlignedObjectArray<btSolverBody>& bodies, const btAlignedObjectArray<int>& heightOfSolverBody);
+	btAlignedObjectArray<char> m_grounded;  // per solver body: held by the ground through one-sided support rows
 	// Support blocks (btSupportBlocks.cpp): each free body's pushing support rows solved at once.
 	void solveBlocks(int layer, const Pools& pools);
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
@@ -185,6 +191,8 @@ private:
 	bool weldFactor(int body, struct btCholesky6& factor) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
+	btAlignedObjectArray<int> m_loadStart, m_loadRows;        // per solver body: the rows where it is the fixated side
+	btAlignedObjectArray<int> m_unheld;                       // down pass: free bodies of a layer their supports do not hold
 	btAlignedObjectArray<int> m_parent;                       // per solver body: the body it is welded to, -1
 	btAlignedObjectArray<int> m_childStart, m_children;
 	btAlignedObjectArray<int> m_compositeOf;                  // per solver body: its composite as root this layer, -1
