@@ -10,7 +10,8 @@ packages=(cmake g++ make pkg-config libbullet-dev)
 if [ "${1:-}" = --demo ]; then
   shift
 else
-  packages+=(libgtest-dev libeigen3-dev libbenchmark-dev
+  # dpkg-dev: dpkg-shlibdeps, for the .deb's versioned dependencies (tests/consumer).
+  packages+=(dpkg-dev libgtest-dev libeigen3-dev libbenchmark-dev
     libglfw3-dev libimgui-dev libpng-dev libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri fonts-dejavu-core)
 fi
 packages+=("$@")

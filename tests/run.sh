@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # README's test command: installs what is missing, builds in float and double precision and
-# runs every test (ctest), including a consumer project built against the install tree; then
+# runs every test (ctest), including the consumer projects built against the install tree and the
+# .deb (tests/consumer): float builds the shared library, double the static one, and each builds
+# the other kind once more (library only) to install beside it, so all four are consumed; then
 # builds float once more with AddressSanitizer + UndefinedBehaviorSanitizer (BSP_SANITIZE=ON)
 # and runs the same tests under them. Tests labelled "long" (ctest -L long) are left out here.
 set -euo pipefail
@@ -8,11 +10,12 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/tests/install-deps.sh"
 jobs="$(nproc 2>/dev/null || echo 2)"
 for precision in float double; do
-  double=OFF
-  [ "$precision" = double ] && double=ON
+  double=OFF shared=ON
+  [ "$precision" = double ] && double=ON shared=OFF
   build="$root/build/$precision"
   echo "=== $precision precision ==="
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBSP_DOUBLE_PRECISION=$double -DBSP_REQUIRE_VIEWER=ON >/dev/null
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBSP_DOUBLE_PRECISION=$double -DBSP_REQUIRE_VIEWER=ON \
+    -DBUILD_SHARED_LIBS=$shared -DCMAKE_INSTALL_PREFIX=/usr >/dev/null
   cmake --build "$build" -j "$jobs"
   (cd "$build" && ctest --output-on-failure -j "$jobs" -LE long)
 done

@@ -18,6 +18,7 @@ subject to the following restrictions:
 #include "LinearMath/btAlignedObjectArray.h"
 #include "LinearMath/btScalar.h"
 #include "LinearMath/btVector3.h"
+#include "btShockPropagationExport.h"
 
 class btPersistentManifold;
 
@@ -58,7 +59,7 @@ enum btContactSupport
 	BT_SUPPORT_B_ON_A = -1
 };
 
-class btContactGraph
+class BT_SHOCK_PROPAGATION_API btContactGraph
 {
 public:
 	/// Forget all edges; the graph gets numBodies nodes.

@@ -17,6 +17,7 @@ subject to the following restrictions:
 
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
 #include "LinearMath/btThreads.h"  // BT_OVERRIDE
+#include "btShockPropagationExport.h"
 
 #include "btContactGraph.h"
 #include "btShockPropagationSettings.h"
@@ -52,7 +53,7 @@ class btShockPropagationDynamicsWorld;
 /// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or
 /// holding a non-finite point are left out too. Counted in getStatistics().
 ATTRIBUTE_ALIGNED16(class)
-btShockPropagationConstraintSolver : public btSequentialImpulseConstraintSolver
+BT_SHOCK_PROPAGATION_API btShockPropagationConstraintSolver : public btSequentialImpulseConstraintSolver
 {
 public:
 	BT_DECLARE_ALIGNED_ALLOCATOR();

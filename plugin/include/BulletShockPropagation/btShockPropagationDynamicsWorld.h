@@ -17,6 +17,7 @@ subject to the following restrictions:
 
 #include "BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h"
 #include "LinearMath/btThreads.h"  // BT_OVERRIDE
+#include "btShockPropagationExport.h"
 
 class btShockPropagationConstraintSolver;
 
@@ -32,7 +33,7 @@ class btShockPropagationConstraintSolver;
 /// callbacks), unchanged. The second correction recomputes each contact point's depth from the
 /// new transforms, as Bullet's refreshContactPoints does, without changing the manifolds (D4).
 ATTRIBUTE_ALIGNED16(class)
-btShockPropagationDynamicsWorld : public btDiscreteDynamicsWorld
+BT_SHOCK_PROPAGATION_API btShockPropagationDynamicsWorld : public btDiscreteDynamicsWorld
 {
 public:
 	BT_DECLARE_ALIGNED_ALLOCATOR();

@@ -16,6 +16,7 @@ subject to the following restrictions:
 #define BT_SHOCK_PROPAGATION_STACK_LAYERS_H
 
 #include "btContactGraph.h"
+#include "btShockPropagationExport.h"
 
 /// Stack layers of a contact graph (Erleben 2007, "Stack layers"; docs/design.md, section 2).
 ///
@@ -51,7 +52,7 @@ enum
 	BT_STACK_HEIGHT_UNREACHED = -1
 };
 
-class btStackLayers
+class BT_SHOCK_PROPAGATION_API btStackLayers
 {
 public:
 	/// Analyse a graph whose adjacency has been built.
