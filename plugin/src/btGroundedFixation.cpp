@@ -25,12 +25,10 @@ subject to the following restrictions:
 //             point or one edge, hanging on a joint, leaning on a side contact) is solved with both
 //             bodies free, as Bullet's own update: fixating that body would hand it a load it
 //             cannot pass on (hostile worlds: a 3 g body under a 0.67 kg one flung at 1.7 km/s).
-//   held      in the down pass a free body is held if it is grounded and every support row's
-//             relative velocity is within the convergence speed. One that is not (it slides, tips
-//             or lifts under what was delivered to it) carries what is welded to it
-//             (btWeldedComposites.cpp) or, carrying nothing welded, is swept again with its load
-//             rows, both of their bodies free: each such update is the row's exact minimiser with
-//             both bodies moving, so the pair finds its coupled motion.
+//   held      in the down pass a free body is held if its support rows fix all six degrees of
+//             freedom and every one's relative velocity is within the convergence speed. One that
+//             is not (it slides, tips or lifts under what was delivered to it) carries what is
+//             welded to it (btWeldedComposites.cpp).
 //   precision s is the free body's mass over the fixated one's along the row, plus one; the
 //             fixated body's velocity carries s times the load until its supports take it back,
 //             so the rounding of that cancellation grows with s. Rows with s > 1 / sqrt(epsilon)
@@ -125,55 +123,4 @@ bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBod
 		if (btFabs(v) > speed) return false;
 	}
 	return true;
-}
-
-int btShockPredictor::sweepWithLoads(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed)
-{
-	// The down pass gave each free body the reactions of the bodies resting on it, found with it
-	// fixated. Where its supports do not hold it (a light body under a heavy one that slides), it
-	// is swept again with its load rows as well, both of their bodies free: Bullet's own update,
-	// each row's exact minimiser with both bodies moving, so the pair finds its coupled motion.
-	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
-	m_unheld.resize(0);
-	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
-	{
-		const int b = m_rows[i].m_free;
-		if (b < 0 || m_loadStart[b] == m_loadStart[b + 1] || m_childStart[b] != m_childStart[b + 1]) continue;
-		bool listed = false;
-		for (int j = 0; j < m_unheld.size() && !listed; ++j) listed = m_unheld[j] == b;
-		if (!listed && !heldBySupports(b, bodies, convergedSpeed)) m_unheld.push_back(b);
-	}
-	int run = 0;
-	for (int s = 0; s < sweeps && m_unheld.size(); ++s)
-	{
-		btScalar largest = 0;
-		for (int j = 0; j < m_unheld.size(); ++j)
-		{
-			const int b = m_unheld[j];
-			for (int k = m_supportStart[b]; k < m_supportStart[b + 1]; ++k) largest = btMax(largest, solveRow(m_rows[m_supportRows[k]], bodies));
-			for (int k = m_loadStart[b]; k < m_loadStart[b + 1]; ++k) largest = btMax(largest, solveCoupledRow(m_rows[m_loadRows[k]], bodies));
-		}
-		++run;
-		if (!(largest > convergedSpeed)) break;
-	}
-	return run;
-}
-
-btScalar btShockPredictor::solveCoupledRow(Row& r, btAlignedObjectArray<btSolverBody>& bodies)
-{
-	// Bullet's row update with both bodies free (nothing withheld).
-	btSolverConstraint& c = *r.m_row;
-	boundByNormal(r);
-	if (c.m_jacDiagABInv == btScalar(0)) return 0;
-	btSolverBody& a = bodies[c.m_solverBodyIdA];
-	btSolverBody& b = bodies[c.m_solverBodyIdB];
-	const btScalar velocity = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity()) +
-							  c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
-	btScalar delta = c.m_rhs - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv;
-	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, c.m_appliedImpulse + delta));
-	delta = clamped - c.m_appliedImpulse;
-	c.m_appliedImpulse = clamped;
-	applyToSide(c, true, delta, bodies);
-	applyToSide(c, false, delta, bodies);
-	return btFabs(delta / c.m_jacDiagABInv);
 }

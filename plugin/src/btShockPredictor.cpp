@@ -130,16 +130,6 @@ void btShockPredictor::bucketSupportRows(int numBodies)
 	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
 	for (int i = 0; i < m_rows.size(); ++i)
 		if (m_rows[i].m_free >= 0) m_supportRows[m_count[m_rows[i].m_free]++] = i;
-	// Load rows of each body: the rows where it is the fixated side (the bodies resting on it).
-	m_loadStart.resize(numBodies + 1);
-	for (int i = 0; i <= numBodies; ++i) m_loadStart[i] = 0;
-	for (int i = 0; i < m_rows.size(); ++i)
-		if (m_rows[i].m_fixed) ++m_loadStart[fixedSide(m_rows[i]) + 1];
-	for (int i = 0; i < numBodies; ++i) m_loadStart[i + 1] += m_loadStart[i];
-	m_loadRows.resize(m_loadStart[numBodies]);
-	for (int i = 0; i < numBodies; ++i) m_count[i] = m_loadStart[i];
-	for (int i = 0; i < m_rows.size(); ++i)
-		if (m_rows[i].m_fixed) m_loadRows[m_count[fixedSide(m_rows[i])]++] = i;
 
 }
 
@@ -230,14 +220,12 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
 {
 	// Each free body first against its fixated supports alone; a body its supports do not hold
-	// (it slides, tips or lifts) then carries what is welded to it, and the layer is swept again;
-	// one that carries nothing welded is swept with the bodies resting on it (both sides free).
+	// (it slides, tips or lifts) then carries what is welded to it, and the layer is swept again.
 	int run = sweepRows(layer, pools, sweeps, convergedSpeed, false);
 	if (composites)
 	{
 		formComposites(layer, pools, convergedSpeed);
 		if (m_composites.size()) run += sweepRows(layer, pools, sweeps, convergedSpeed, true);
-		run += sweepWithLoads(layer, pools, sweeps, convergedSpeed);
 	}
 	return run;
 }

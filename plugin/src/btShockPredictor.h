@@ -138,8 +138,6 @@ private:
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
 	bool supportsSpanSix(int body) const;
-	int sweepWithLoads(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
-	btScalar solveCoupledRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
@@ -191,8 +189,6 @@ private:
 	bool weldFactor(int body, struct btCholesky6& factor) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
-	btAlignedObjectArray<int> m_loadStart, m_loadRows;        // per solver body: the rows where it is the fixated side
-	btAlignedObjectArray<int> m_unheld;                       // down pass: free bodies of a layer their supports do not hold
 	btAlignedObjectArray<int> m_parent;                       // per solver body: the body it is welded to, -1
 	btAlignedObjectArray<int> m_childStart, m_children;
 	btAlignedObjectArray<int> m_compositeOf;                  // per solver body: its composite as root this layer, -1
