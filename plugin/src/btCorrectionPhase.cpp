@@ -32,6 +32,7 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	const btScalar dt = info.m_timeStep;
+	const btScalar fraction = fresh ? m_settings.m_diagnostics.m_secondCorrectionFraction : m_settings.m_diagnostics.m_correctionFraction;
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{
 		const int edge = m_edgeOfManifold[i];
@@ -64,7 +65,7 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 			}
 			const btScalar depth = -distance - slop;
 			if (!(depth > btScalar(0))) continue;
-			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, m_settings.m_diagnostics.m_correctionFraction * depth,
+			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, fraction * depth,
 								   m_layers.getEdgeLayer(edge));
 		}
 	}
