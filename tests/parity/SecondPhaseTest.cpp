@@ -251,3 +251,97 @@ TEST(SecondPhase, ContactCallbacksAndImpulsesAreThoseOfOneStockStep)
 	}
 }
 }  // namespace parity
+
+namespace parity
+{
+namespace
+{
+/// Positions of the dynamic bodies after `steps` steps of a scene built by `build`, in world mode
+/// with the second phase off, or in the solver-only mode.
+template <class Build>
+std::vector<btVector3> runWithoutSecondPhase(Mode mode, int steps, Build build)
+{
+	Scene scene(mode);
+	if (mode == Mode::World)
+	{
+		btShockPropagationDynamicsWorld& world = static_cast<btShockPropagationDynamicsWorld&>(scene.world());
+		btShockPropagationSettings settings = world.getShockPropagationSolver()->getSettings();
+		settings.m_secondCorrection = false;
+		world.getShockPropagationSolver()->setSettings(settings);
+	}
+	std::vector<btRigidBody*> bodies = build(scene);
+	for (int i = 0; i < steps; ++i) scene.step();
+	std::vector<btVector3> at;
+	for (btRigidBody* b : bodies) at.push_back(b->getCenterOfMassPosition());
+	return at;
+}
+
+double largestDifference(const std::vector<btVector3>& a, const std::vector<btVector3>& b)
+{
+	double d = 0;
+	for (size_t i = 0; i < a.size(); ++i) d = std::max(d, double((a[i] - b[i]).length()));
+	return d;
+}
+}  // namespace
+
+// With the second phase off, the world is btDiscreteDynamicsWorld with the plugin's solver: the
+// two modes step bit-identically. Checked on reductions of Bullet's prim-vs-mesh benchmark
+// (convex primitives piling on a triangle mesh) and 6-dof spring example (bodies on
+// btGeneric6DofSpring2Constraint springs, one resting on another).
+TEST(SecondPhase, WithoutItTheWorldStepsAsTheSolverOnlyMode)
+{
+	auto primsOnMesh = [](Scene& scene) {
+		btTriangleMesh* mesh = new btTriangleMesh();
+		for (int i = -5; i < 5; ++i)
+			for (int k = -5; k < 5; ++k)
+			{
+				const btVector3 a = vec(i, 0.1 * ((i + k) % 3), k), b = vec(i + 1, 0.1 * ((i + 1 + k) % 3), k);
+				const btVector3 c = vec(i, 0.1 * ((i + k + 1) % 3), k + 1), d = vec(i + 1, 0.1 * ((i + k + 2) % 3), k + 1);
+				mesh->addTriangle(a, b, c);
+				mesh->addTriangle(b, d, c);
+			}
+		struct MeshShape : public btBvhTriangleMeshShape
+		{
+			std::unique_ptr<btTriangleMesh> owned;
+			explicit MeshShape(btTriangleMesh* m) : btBvhTriangleMeshShape(m, true), owned(m) {}
+		};
+		scene.addBody(new MeshShape(mesh), 0, btTransform::getIdentity());
+		std::vector<btRigidBody*> bodies;
+		for (int i = 0; i < 18; ++i)
+		{
+			const btVector3 at = vec(-2 + 0.9 * (i % 5), 1 + 0.8 * (i / 5), -1 + 0.7 * (i % 3));
+			btCollisionShape* shape = i % 3 == 0 ? static_cast<btCollisionShape*>(new btBoxShape(vec(0.3, 0.3, 0.3)))
+						   : i % 3 == 1 ? static_cast<btCollisionShape*>(new btSphereShape(0.3))
+										: static_cast<btCollisionShape*>(new btCylinderShape(vec(0.3, 0.3, 0.3)));
+			bodies.push_back(scene.addBody(shape, 1.0, btTransform(btQuaternion(0.1 * i, 0.2, 0), at)));
+		}
+		return bodies;
+	};
+	auto springs = [](Scene& scene) {
+		scene.addGround();
+		std::vector<btRigidBody*> bodies;
+		for (int i = 0; i < 3; ++i)
+		{
+			btRigidBody* b = scene.addBox(vec(0.5, 0.25, 0.5), 1.0, vec(3 * i, 2, 0));
+			btGeneric6DofSpring2Constraint* dof = new btGeneric6DofSpring2Constraint(*b, btTransform::getIdentity());
+			dof->setLinearLowerLimit(vec(0, -1.5, 0));
+			dof->setLinearUpperLimit(vec(0, 1.5, 0));
+			dof->setAngularLowerLimit(vec(0, 0, 0));
+			dof->setAngularUpperLimit(vec(0, 0, 0));
+			dof->enableSpring(1, true);
+			dof->setStiffness(1, 40.0 * (i + 1));
+			dof->setDamping(1, 0.5);
+			dof->setEquilibriumPoint();
+			scene.addConstraint(dof);
+			bodies.push_back(b);
+			bodies.push_back(scene.addBox(vec(0.3, 0.3, 0.3), 0.5, vec(3 * i, 2.6, 0)));  // resting on the sprung body
+		}
+		return bodies;
+	};
+	const double prims = largestDifference(runWithoutSecondPhase(Mode::World, 240, primsOnMesh), runWithoutSecondPhase(Mode::Solver, 240, primsOnMesh));
+	const double dofs = largestDifference(runWithoutSecondPhase(Mode::World, 240, springs), runWithoutSecondPhase(Mode::Solver, 240, springs));
+	std::cout << "SECOND PHASE OFF | prims on mesh: world - solver-only " << prims << " m | 6-dof springs: " << dofs << " m" << std::endl;
+	EXPECT_EQ(prims, 0.0);
+	EXPECT_EQ(dofs, 0.0);
+}
+}  // namespace parity
