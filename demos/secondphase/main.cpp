@@ -4,11 +4,12 @@
 // (btCollisionWorld::contactTest of every dynamic body), not from the step's manifolds: those
 // hold the contacts of the step's start, and a contact that appeared during the step is in none.
 //
-//   bsp_second_phase [--pile-seconds S] [--seeds N] [--second-fraction F]
+//   bsp_second_phase [--pile-seconds S] [--seeds N] [--second-fraction F] [--rounds N]
 //
 // Rows: stock SI; solver-only; world with the second phase off (the world before issue 38, what
 // m_secondCorrection = false gives); world with the depth refresh of before issue 38 (no
-// detection); world (default: detection at t + dt, layered correction).
+// detection); world with one round of detection and full correction; world (default: two
+// rounds, the first removing 0.8 of each depth, the second all that is left).
 #include <harness/Metrics.h>
 #include <harness/Simulation.h>
 #include <scenes/Registry.h>
@@ -28,7 +29,8 @@
 
 namespace
 {
-double gSecondFraction = 1;  // --second-fraction
+double gSecondFraction = -1;  // --second-fraction: the first rounds' share (default: the settings')
+int gRounds = 0;               // --rounds: rounds of the default world row (default: the settings')
 
 struct Variant
 {
@@ -36,15 +38,18 @@ struct Variant
 	harness::SolverKind kind;
 	bool second;
 	bool detect;
+	int rounds;  // 0: the settings' default (or --rounds)
 };
 
 const Variant kVariants[] = {
-	{"stock SI", harness::SolverKind::StockSI, false, false},
-	{"solver-only", harness::SolverKind::ShockSolverOnly, false, false},
-	{"world, second phase off", harness::SolverKind::ShockWorld, false, false},
-	{"world, depth refresh (old D4)", harness::SolverKind::ShockWorld, true, false},
-	{"world (default)", harness::SolverKind::ShockWorld, true, true},
+	{"stock SI", harness::SolverKind::StockSI, false, false, 0},
+	{"solver-only", harness::SolverKind::ShockSolverOnly, false, false, 0},
+	{"world, second phase off", harness::SolverKind::ShockWorld, false, false, 0},
+	{"world, depth refresh (old D4)", harness::SolverKind::ShockWorld, true, false, 1},
+	{"world, one round (all depth)", harness::SolverKind::ShockWorld, true, true, 1},
+	{"world (default)", harness::SolverKind::ShockWorld, true, true, 0},
 };
+const int kDefault = 5;
 
 harness::SolverSpec specOf(const Variant& v)
 {
@@ -53,7 +58,9 @@ harness::SolverSpec specOf(const Variant& v)
 	s.iterations = 10;
 	s.settings.m_secondCorrection = v.second;
 	s.settings.m_diagnostics.m_secondDetection = v.detect;
-	s.settings.m_diagnostics.m_secondCorrectionFraction = btScalar(gSecondFraction);
+	if (gSecondFraction > 0) s.settings.m_diagnostics.m_secondCorrectionFraction = btScalar(gSecondFraction);
+	if (v.rounds > 0) s.settings.m_diagnostics.m_secondPhaseRounds = v.rounds;
+	else if (gRounds > 0) s.settings.m_diagnostics.m_secondPhaseRounds = gRounds;
 	return s;
 }
 
@@ -137,7 +144,7 @@ void ripple()
 	std::printf("\nRipple: a 1 m cube lands at 6 m/s (from 5 cm above) on a tower of 20 1 m cubes; per step from the landing step:\n");
 	std::printf("deepest narrowphase penetration in the column (mm) / largest vertical speed of a tower cube (m/s).\n");
 	std::printf("%-6s", "step");
-	const int kinds[] = {0, 1, 4};
+	const int kinds[] = {0, 1, kDefault};
 	for (int k : kinds) std::printf(" %30s", kVariants[k].name);
 	std::printf("\n");
 	std::vector<std::vector<std::pair<double, double>>> trace;
@@ -243,13 +250,15 @@ int main(int argc, char** argv)
 		const std::string a = argv[i];
 		if (a == "--pile-seconds" && i + 1 < argc)
 			seconds = std::atof(argv[++i]);
+		else if (a == "--rounds" && i + 1 < argc)
+			gRounds = std::atoi(argv[++i]);
 		else if (a == "--second-fraction" && i + 1 < argc)
 			gSecondFraction = std::atof(argv[++i]);
 		else if (a == "--seeds" && i + 1 < argc)
 			seeds = std::atoi(argv[++i]);
 		else
 		{
-			std::printf("usage: bsp_second_phase [--pile-seconds S] [--seeds N] [--second-fraction F]\n");
+			std::printf("usage: bsp_second_phase [--pile-seconds S] [--seeds N] [--second-fraction F] [--rounds N]\n");
 			return a == "--help" ? 0 : 2;
 		}
 	}

@@ -22,7 +22,7 @@ subject to the following restrictions:
 
 using namespace btShockPropagationChecks;
 
-void btShockPropagationConstraintSolver::correctPositions(const btContactSolverInfo& info, bool fresh, bool layered)
+void btShockPropagationConstraintSolver::correctPositions(const btContactSolverInfo& info, bool fresh, bool layered, btScalar fraction)
 {
 	const int sweeps = sweepCount(m_settings.m_correctionIterations, info.m_numIterations);
 	if (sweeps <= 0 || m_bodies.size() == 0) return;
@@ -32,7 +32,7 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	const btScalar dt = info.m_timeStep;
-	const btScalar fraction = fresh ? m_settings.m_diagnostics.m_secondCorrectionFraction : m_settings.m_diagnostics.m_correctionFraction;
+	if (fraction < btScalar(0)) fraction = m_settings.m_diagnostics.m_correctionFraction;
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{
 		const int edge = m_edgeOfManifold[i];
@@ -76,7 +76,7 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 }
 
 void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds,
-														  int numManifolds, const btContactSolverInfo& info)
+														  int numManifolds, const btContactSolverInfo& info, btScalar fraction)
 {
 	BT_PROFILE("btShockPropagationConstraintSolver::correctAfterStep");
 	btClock clock;
@@ -113,7 +113,7 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 		m_manifolds.resize(keptManifolds);
 		m_edgeOfManifold.resize(keptManifolds);
 		for (int i = 0; i < keptManifolds; ++i) m_edgeOfManifold[i] = keptEdges[i];
-		correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection);
+		correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection, fraction);
 	}
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }

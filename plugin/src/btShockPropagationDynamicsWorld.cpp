@@ -80,6 +80,14 @@ private:
 	ContactEndedCallback m_ended;
 };
 
+/// Orders saved manifold indices by the manifolds' addresses.
+struct btSavedManifoldOrder
+{
+	const btAlignedObjectArray<btPersistentManifold*>& m_manifolds;
+	explicit btSavedManifoldOrder(const btAlignedObjectArray<btPersistentManifold*>& manifolds) : m_manifolds(manifolds) {}
+	bool operator()(int a, int b) const { return m_manifolds[a] < m_manifolds[b]; }
+};
+
 /// The narrowphase of the second detection: each overlapping pair with a body in a marked
 /// island (or every pair) goes through the dispatcher's near callback, as
 /// btCollisionDispatcher::dispatchAllCollisionPairs sends it (the app's near callback included).
@@ -223,7 +231,6 @@ void btShockPropagationDynamicsWorld::saveManifolds()
 	int numPoints = 0;
 	for (int i = 0; i < numManifolds; ++i) numPoints += m_dispatcher1->getManifoldByIndexInternal(i)->getNumContacts();
 	m_savedPoints.resize(numPoints);
-	m_savedIndex.clear();
 	numPoints = 0;
 	for (int i = 0; i < numManifolds; ++i)
 	{
@@ -233,7 +240,6 @@ void btShockPropagationDynamicsWorld::saveManifolds()
 		m_savedBodies[2 * i + 1] = m->getBody1();
 		m_savedFirstPoint[i] = numPoints;
 		for (int j = 0; j < m->getNumContacts(); ++j) m_savedPoints[numPoints++] = m->getContactPoint(j);
-		m_savedIndex.insert(btHashPtr(m), i);
 	}
 	m_savedFirstPoint[numManifolds] = numPoints;
 }
@@ -243,18 +249,46 @@ void btShockPropagationDynamicsWorld::restoreManifolds(ContactDestroyedCallback 
 	const int numSaved = m_savedManifolds.size();
 	m_savedFound.resize(numSaved);
 	for (int i = 0; i < numSaved; ++i) m_savedFound[i] = 0;
-	for (int i = 0; i < m_dispatcher1->getNumManifolds(); ++i)
+	// The dispatcher keeps its manifolds in order and appends new ones; only a release moves the
+	// last one into the freed slot. So manifold i is saved manifold i unless something was
+	// released; then the saved ones are found by pointer in a sorted copy (no allocation once
+	// the arrays have grown).
+	const int numNow = m_dispatcher1->getNumManifolds();
+	bool inOrder = numNow >= numSaved;
+	for (int i = 0; inOrder && i < numSaved; ++i) inOrder = m_dispatcher1->getManifoldByIndexInternal(i) == m_savedManifolds[i];
+	if (!inOrder)
+	{
+		m_savedByPointer.resize(numSaved);
+		for (int i = 0; i < numSaved; ++i) m_savedByPointer[i] = i;
+		m_savedByPointer.quickSort(btSavedManifoldOrder(m_savedManifolds));
+	}
+	for (int i = 0; i < numNow; ++i)
 	{
 		btPersistentManifold* m = m_dispatcher1->getManifoldByIndexInternal(i);
-		const int* saved = m_savedIndex.find(btHashPtr(m));
-		if (saved && m_savedBodies[2 * *saved] == m->getBody0() && m_savedBodies[2 * *saved + 1] == m->getBody1())
+		int saved = -1;
+		if (inOrder)
+			saved = i < numSaved ? i : -1;
+		else
+		{
+			int low = 0, high = numSaved;  // first entry whose pointer is not below m
+			while (low < high)
+			{
+				const int middle = (low + high) / 2;
+				if (m_savedManifolds[m_savedByPointer[middle]] < m)
+					low = middle + 1;
+				else
+					high = middle;
+			}
+			if (low < numSaved && m_savedManifolds[m_savedByPointer[low]] == m) saved = m_savedByPointer[low];
+		}
+		if (saved >= 0 && m_savedBodies[2 * saved] == m->getBody0() && m_savedBodies[2 * saved + 1] == m->getBody1())
 		{
 			// The points it held after the solve (a refreshed or replaced point keeps its slot's
 			// impulse and user data in Bullet, so nothing of the second detection is kept).
-			const int first = m_savedFirstPoint[*saved], count = m_savedFirstPoint[*saved + 1] - first;
+			const int first = m_savedFirstPoint[saved], count = m_savedFirstPoint[saved + 1] - first;
 			m->setNumContacts(count);
 			for (int j = 0; j < count; ++j) m->getContactPoint(j) = m_savedPoints[first + j];
-			m_savedFound[*saved] = 1;
+			m_savedFound[saved] = 1;
 		}
 		else
 		{
@@ -311,10 +345,18 @@ void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
 			btSilencedContactCallbacks silenced;
 			destroyed = silenced.destroyed();
 			ended = silenced.ended();
-			detectCollisionsAfterStep(allPairs);
-			m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
-											m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
-											m_dispatcher1->getNumManifolds(), info);
+			// Rounds: each but the last removes a fraction of the depths (it cannot see the
+			// contacts it pushes bodies into); the last round's detection sees them, and it
+			// removes all that is left.
+			const int rounds = btMax(1, settings.m_diagnostics.m_secondPhaseRounds);
+			for (int round = 0; round < rounds; ++round)
+			{
+				detectCollisionsAfterStep(allPairs);
+				const btScalar fraction = round + 1 < rounds ? settings.m_diagnostics.m_secondCorrectionFraction : btScalar(1);
+				m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
+												m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
+												m_dispatcher1->getNumManifolds(), info, fraction);
+			}
 		}
 		// Putting points back fires nothing; a released manifold's callbacks fire here, restored.
 		restoreManifolds(destroyed, ended);
@@ -323,5 +365,5 @@ void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
 	// Ablation (before issue 38): the step's own points, depths from the new transforms.
 	m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
 									m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
-									m_dispatcher1->getNumManifolds(), info);
+									m_dispatcher1->getNumManifolds(), info, settings.m_diagnostics.m_correctionFraction);
 }

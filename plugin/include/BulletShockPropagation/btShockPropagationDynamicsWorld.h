@@ -17,7 +17,6 @@ subject to the following restrictions:
 
 #include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h"
-#include "LinearMath/btHashMap.h"
 #include "LinearMath/btThreads.h"  // BT_OVERRIDE
 
 class btShockPropagationConstraintSolver;
@@ -38,6 +37,8 @@ class btShockPropagationConstraintSolver;
 ///   5. correction at t + dt: the penetration beyond the slop of   btPositionCorrection, layered
 ///      the contacts of 4, layer by layer bottom-up, lower bodies
 ///      fixated; positions only, velocities untouched
+///   4-5 again (m_secondPhaseRounds, 2): the first round removes 0.8 of each depth, the second
+///      detects what the first pushed bodies into and removes all that is left
 ///   6. the manifolds are put back as 1 and 2 left them            (see below)
 ///   then Bullet's own: actions, sleeping, internal tick callback.
 ///
@@ -112,7 +113,7 @@ private:
 	btAlignedObjectArray<int> m_savedFirstPoint;             // one more than saved manifolds
 	btAlignedObjectArray<btManifoldPoint> m_savedPoints;
 	btAlignedObjectArray<char> m_savedFound;
-	btHashMap<btHashPtr, int> m_savedIndex;
+	btAlignedObjectArray<int> m_savedByPointer;  // saved indices by address (after a release)
 };
 
 #endif  // BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H
