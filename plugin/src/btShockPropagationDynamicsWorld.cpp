@@ -347,15 +347,17 @@ void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
 			ended = silenced.ended();
 			// Rounds: each but the last removes a fraction of the depths (it cannot see the
 			// contacts it pushes bodies into); the last round's detection sees them, and it
-			// removes all that is left.
+			// removes all that is left. A round that found nothing beyond the slop moved nothing,
+			// so another detection would find the same: the phase ends (a resting stack pays one).
 			const int rounds = btMax(1, settings.m_diagnostics.m_secondPhaseRounds);
 			for (int round = 0; round < rounds; ++round)
 			{
 				detectCollisionsAfterStep(allPairs);
 				const btScalar fraction = round + 1 < rounds ? settings.m_diagnostics.m_secondCorrectionFraction : btScalar(1);
-				m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
-												m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
-												m_dispatcher1->getNumManifolds(), info, fraction);
+				const bool moved = m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
+																   m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
+																   m_dispatcher1->getNumManifolds(), info, fraction);
+				if (!moved) break;
 			}
 		}
 		// Putting points back fires nothing; a released manifold's callbacks fire here, restored.

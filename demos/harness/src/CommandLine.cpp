@@ -198,6 +198,8 @@ const std::vector<PluginFlag>& pluginFlags()
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
 		switchFlag("--no-second-phase", "plugin: no second phase after the positions advance (D4 off: the world steps as the solver-only mode)",
 				   field(&btShockPropagationSettings::m_secondCorrection), false, "nosecond"),
+		switchFlag("--second-all-pairs", "plugin: the second phase's detection dispatches every overlapping pair, not only those of stacked islands (D4)",
+				   diagnostic(&btShockPropagationDiagnostics::m_secondDetectionAllPairs), true, "allpairs2"),
 		switchFlag("--second-depth-refresh", "plugin: the second correction at the step's own points, depths refreshed, no detection at t + dt (before issue 38)",
 				   diagnostic(&btShockPropagationDiagnostics::m_secondDetection), false, "refresh2"),
 		switchFlag("--converging", "plugin: the converging step (predictor, corrector; opt-in, work in progress; docs/design.md section 4u)",

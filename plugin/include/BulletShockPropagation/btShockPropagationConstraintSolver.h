@@ -107,8 +107,8 @@ private:
 
 	/// The world's second correction (after positions advanced): every active dynamic body and
 	/// every manifold of the world, depths recomputed from the new transforms, fraction of each
-	/// depth beyond the slop removed.
-	void correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds, int numManifolds,
+	/// depth beyond the slop removed. Returns whether any point was deeper than the slop.
+	bool correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds, int numManifolds,
 						  const btContactSolverInfo& info, btScalar fraction);
 
 	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
@@ -126,8 +126,9 @@ private:
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
 	void limitWarmStart(const btContactSolverInfo& info);
 	/// Position correction of the group's contacts; fresh: depths from the current transforms;
-	/// fraction of each depth removed (negative: m_diagnostics.m_correctionFraction).
-	void correctPositions(const btContactSolverInfo& info, bool fresh, bool layered, btScalar fraction = btScalar(-1));
+	/// fraction of each depth removed (negative: m_diagnostics.m_correctionFraction). Returns
+	/// whether any point was deeper than the slop.
+	bool correctPositions(const btContactSolverInfo& info, bool fresh, bool layered, btScalar fraction = btScalar(-1));
 	int sweepCount(int setting, int worldIterations) const;
 
 	btShockPropagationSettings m_settings;

@@ -61,7 +61,8 @@ class btShockPropagationConstraintSolver;
 ///   (given a copy of it) fired at the end of the step, where stock would fire them in the next
 ///   step's detection;
 /// - the app's near callback (btCollisionDispatcher::setNearCallback) and overlap filter
-///   (btOverlapFilterCallback) are called a second time for the pairs of 4, and a ghost object's
+///   (btOverlapFilterCallback) are called again for the pairs of 4, once per round (a dispatcher
+///   that is not a btCollisionDispatcher dispatches every pair its own way), and a ghost object's
 ///   pair list (btGhostPairCallback) can gain a pair at t + dt, one step earlier than in stock;
 ///   the broadphase bounds of moving bodies enclose both t and t + dt until the next step's
 ///   updateAabbs (so no pair a stock step keeps is removed);
