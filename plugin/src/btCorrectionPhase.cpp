@@ -22,16 +22,17 @@ subject to the following restrictions:
 
 using namespace btShockPropagationChecks;
 
-void btShockPropagationConstraintSolver::correctPositions(const btContactSolverInfo& info, bool fresh, bool layered)
+bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverInfo& info, bool fresh, bool layered, btScalar fraction)
 {
 	const int sweeps = sweepCount(m_settings.m_correctionIterations, info.m_numIterations);
-	if (sweeps <= 0 || m_bodies.size() == 0) return;
+	if (sweeps <= 0 || m_bodies.size() == 0) return false;
 	int numPoints = 0;
 	for (int i = 0; i < m_manifolds.size(); ++i) numPoints += m_manifolds[i]->getNumContacts();
 	m_correction->reset(m_bodies.size(), m_layers.getNumLayers(), numPoints);
 	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	const btScalar dt = info.m_timeStep;
+	if (fraction < btScalar(0)) fraction = m_settings.m_diagnostics.m_correctionFraction;
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{
 		const int edge = m_edgeOfManifold[i];
@@ -64,18 +65,19 @@ void btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 			}
 			const btScalar depth = -distance - slop;
 			if (!(depth > btScalar(0))) continue;
-			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, m_settings.m_diagnostics.m_correctionFraction * depth,
+			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, fraction * depth,
 								   m_layers.getEdgeLayer(edge));
 		}
 	}
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
-	if (m_correction->getNumPoints() == 0) return;
+	if (m_correction->getNumPoints() == 0) return false;
 	m_correction->solve(sweeps, layered ? &m_layers : 0);
 	m_correction->apply();
+	return true;
 }
 
-void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds,
-														  int numManifolds, const btContactSolverInfo& info)
+bool btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds,
+														  int numManifolds, const btContactSolverInfo& info, btScalar fraction)
 {
 	BT_PROFILE("btShockPropagationConstraintSolver::correctAfterStep");
 	btClock clock;
@@ -88,6 +90,7 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 	buildGraph();
 	// Only stacked components are corrected (groups without stacks were Bullet's own solve).
 	bool anyStack = m_layers.getNumLayers() > 1 || m_settings.m_diagnostics.m_layerFlatGroups;
+	bool moved = false;
 	if (anyStack)
 	{
 		btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
@@ -112,7 +115,8 @@ void btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 		m_manifolds.resize(keptManifolds);
 		m_edgeOfManifold.resize(keptManifolds);
 		for (int i = 0; i < keptManifolds; ++i) m_edgeOfManifold[i] = keptEdges[i];
-		correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection);
+		moved = correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection, fraction);
 	}
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
+	return moved;
 }

@@ -77,6 +77,8 @@ void btShockPropagationConstraintSolver::setSettings(const btShockPropagationSet
 	m_settings.m_layerMinIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_layerMinIterations);
 	m_settings.m_correctionIterations = btMax(int(BT_SHOCK_ITERATIONS_FROM_WORLD), settings.m_correctionIterations);
 	if (!(settings.m_diagnostics.m_correctionFraction >= 0 && settings.m_diagnostics.m_correctionFraction <= 1)) m_settings.m_diagnostics.m_correctionFraction = defaults.m_diagnostics.m_correctionFraction;
+	if (!(settings.m_diagnostics.m_secondCorrectionFraction > 0 && settings.m_diagnostics.m_secondCorrectionFraction <= 1)) m_settings.m_diagnostics.m_secondCorrectionFraction = defaults.m_diagnostics.m_secondCorrectionFraction;
+	if (settings.m_diagnostics.m_secondPhaseRounds < 1) m_settings.m_diagnostics.m_secondPhaseRounds = defaults.m_diagnostics.m_secondPhaseRounds;
 	if (!isFiniteScalar(settings.m_correctionSlop)) m_settings.m_correctionSlop = defaults.m_correctionSlop;
 	if (!(settings.m_correctionSlopPerFall >= 0) || !isFiniteScalar(settings.m_correctionSlopPerFall))
 		m_settings.m_correctionSlopPerFall = defaults.m_correctionSlopPerFall;

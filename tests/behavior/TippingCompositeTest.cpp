@@ -140,8 +140,11 @@ TEST(ImpactTipping, WithoutItTheLandingsAreStoppedFlatAndTheColumnTipsLate)
 	// So is D31 (a weight-pass re-solve ends with its support blocks): in double, with D27 and D29
 	// off but D31 on, the column reaches half height at 3.93 s (8% late; without all three 5.03 s;
 	// in float 5.08 s either way): D31 carries part of the landing's momentum too.
+	// Measured in the solver-only mode: the world's second phase (D4, issue 38) lifts the landings'
+	// penetration at t + dt and recovers most of what D27 is for (with the three off, the world's
+	// column reaches half height at 4.00 s, 7.5% late; solver-only 5.00 s).
 	const double expected = referenceHalfHeightTime();
-	harness::SolverSpec without = spec::shock();
+	harness::SolverSpec without = spec::shockSolverOnly();
 	without.settings.m_diagnostics.m_impactTipping = false;
 	without.settings.m_diagnostics.m_rigidSlidingComposites = false;
 	without.settings.m_diagnostics.m_weightPassBlocks = false;

@@ -17,10 +17,16 @@ subject to the following restrictions:
 
 /// Umbrella header of BulletShockPropagation, like Bullet's btBulletDynamicsCommon.h.
 ///
-/// Solver-only drop-in, on any btDiscreteDynamicsWorld (layered solve and in-layer correction):
-///     world->setConstraintSolver(new btShockPropagationConstraintSolver);
-/// Full algorithm (adds collision detection at t + dt and the global correction):
+/// Full algorithm (recommended): replace the world. Each step, in order: collision detection at
+/// t; the layered velocity solve and a position correction at those contacts; Bullet integrates;
+/// collision detection at t + dt (Bullet's broadphase and dispatcher, new pairs included, for the
+/// pairs of stacked islands); the layered position correction at those contacts (D4, on by
+/// default; callbacks and applied impulses stay one stock step's: btShockPropagationDynamicsWorld.h):
 ///     btShockPropagationDynamicsWorld world(dispatcher, broadphase, nullptr, configuration);
+/// Solver-only drop-in, on any btDiscreteDynamicsWorld: the same without the last two (a solver
+/// runs before the positions advance), so a contact that appears during a step stays in the
+/// bodies until the next step (a cube landing at 6 m/s on a stack: 52.7 mm deep, world 0.49 mm):
+///     world->setConstraintSolver(new btShockPropagationConstraintSolver);
 
 #include "btContactGraph.h"
 #include "btShockPropagationConstraintSolver.h"

@@ -107,9 +107,10 @@ private:
 	btShockPropagationConstraintSolver& operator=(const btShockPropagationConstraintSolver&);
 
 	/// The world's second correction (after positions advanced): every active dynamic body and
-	/// every manifold of the world, depths recomputed from the new transforms.
-	void correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds, int numManifolds,
-						  const btContactSolverInfo& info);
+	/// every manifold of the world, depths recomputed from the new transforms, fraction of each
+	/// depth beyond the slop removed. Returns whether any point was deeper than the slop.
+	bool correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds, int numManifolds,
+						  const btContactSolverInfo& info, btScalar fraction);
 
 	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 					 btTypedConstraint** constraints, int numConstraints, bool countInStatistics);
@@ -124,8 +125,10 @@ private:
 	void assignRowsToLayers();
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
 	void limitWarmStart(const btContactSolverInfo& info);
-	/// Position correction of the group's contacts; fresh: depths from the current transforms.
-	void correctPositions(const btContactSolverInfo& info, bool fresh, bool layered);
+	/// Position correction of the group's contacts; fresh: depths from the current transforms;
+	/// fraction of each depth removed (negative: m_diagnostics.m_correctionFraction). Returns
+	/// whether any point was deeper than the slop.
+	bool correctPositions(const btContactSolverInfo& info, bool fresh, bool layered, btScalar fraction = btScalar(-1));
 	int sweepCount(int setting, int worldIterations) const;
 
 	btShockPropagationSettings m_settings;

@@ -15,23 +15,60 @@ subject to the following restrictions:
 #ifndef BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H
 #define BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H
 
+#include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h"
 #include "LinearMath/btThreads.h"  // BT_OVERRIDE
 #include "btShockPropagationExport.h"
 
 class btShockPropagationConstraintSolver;
 
-/// A btDiscreteDynamicsWorld that runs Erleben's full time step (ACM TOG 2007, "final algorithm"):
+/// A btDiscreteDynamicsWorld that runs Erleben's full time step (ACM TOG 2007, "final algorithm").
+/// One internal step, in the order it runs:
 ///
 ///   what runs                                                     Bullet call
-///   CD(t), islands                                                performDiscreteCollisionDetection
-///   global pass, layers bottom-up, position correction at CD(t)   solveConstraints (solver's solveGroup)
-///   positions advance with the final velocity                     integrateTransforms
-///   second correction at t + dt ("anti-rippling")                 after integrateTransforms
+///   1. collision detection at t, islands                          performDiscreteCollisionDetection,
+///                                                                 calculateSimulationIslands
+///   2. velocities: global pass, layers bottom-up, weight pass;    solveConstraints (the solver's
+///      position correction at the contacts of 1                   solveGroup)
+///   3. positions advance with the final velocities                integrateTransforms
+///   4. collision detection at t + dt: broadphase (new pairs       inside integrateTransforms, after
+///      included) and narrowphase of every overlapping pair with   Bullet's: setAabb,
+///      a body in a stacked island of 2 (an island holding a body  calculateOverlappingPairs, the
+///      at stack height 2 or more); skipped if 2 had no stack      dispatcher's near callback
+///   5. correction at t + dt: the penetration beyond the slop of   btPositionCorrection, layered
+///      the contacts of 4, layer by layer bottom-up, lower bodies
+///      fixated; positions only, velocities untouched
+///   4-5 again (m_secondPhaseRounds, 2): the first round removes 0.8 of each depth, the second
+///      detects what the first pushed bodies into and removes all that is left
+///   6. the manifolds are put back as 1 and 2 left them            (see below)
+///   then Bullet's own: actions, sleeping, internal tick callback.
 ///
-/// Everything else is btDiscreteDynamicsWorld's own step (predictive contacts, actions, sleeping,
-/// callbacks), unchanged. The second correction recomputes each contact point's depth from the
-/// new transforms, as Bullet's refreshContactPoints does, without changing the manifolds (D4).
+/// 4-6 are the second phase (btShockPropagationSettings::m_secondCorrection, on by default; D4).
+/// A constraint solver runs before the positions advance, so the solver-only mode
+/// (btDiscreteDynamicsWorld + btShockPropagationConstraintSolver) cannot do 4-5: a contact that
+/// appears during a step stays in the bodies until the next step's solve pushes it out.
+///
+/// What an app sees of the second detection:
+/// - contact callbacks: none. gContactAddedCallback, gContactProcessedCallback,
+///   gContactStartedCallback, gContactEndedCallback and gContactDestroyedCallback are cleared
+///   while it runs and restored after, so each fires as often as in a stock step (the next
+///   step's detection reports the points it found, as stock's does);
+/// - manifolds after stepSimulation: every manifold that existed after the solve holds exactly
+///   the points it held then (positions, distances, getAppliedImpulse(), lifetimes, user data),
+///   as after a stock step, so warm starting and impulse read-back are stock's; a manifold the
+///   second detection created (a pair new at t + dt) is left empty, as a broadphase pair without
+///   contact is after a stock step; a manifold it released (a compound's child that separated)
+///   is gone, its points' gContactDestroyedCallback and the manifold's gContactEndedCallback
+///   (given a copy of it) fired at the end of the step, where stock would fire them in the next
+///   step's detection;
+/// - the app's near callback (btCollisionDispatcher::setNearCallback) and overlap filter
+///   (btOverlapFilterCallback) are called again for the pairs of 4, once per round (a dispatcher
+///   that is not a btCollisionDispatcher dispatches every pair its own way), and a ghost object's
+///   pair list (btGhostPairCallback) can gain a pair at t + dt, one step earlier than in stock;
+///   the broadphase bounds of moving bodies enclose both t and t + dt until the next step's
+///   updateAabbs (so no pair a stock step keeps is removed);
+/// - bodies in stacked islands end the step up to their penetration beyond the slop away from
+///   where stock's integration put them; their velocities are those the solver left.
 ATTRIBUTE_ALIGNED16(class)
 BT_SHOCK_PROPAGATION_API btShockPropagationDynamicsWorld : public btDiscreteDynamicsWorld
 {
@@ -54,14 +91,31 @@ public:
 
 protected:
 	virtual void internalSingleStepSimulation(btScalar timeStep) BT_OVERRIDE;
-	/// Bullet's integration, then the second correction (m_secondCorrection).
+	/// Bullet's integration, then the second phase (m_secondCorrection): 4-6 above.
 	virtual void integrateTransforms(btScalar timeStep) BT_OVERRIDE;
 
-	/// The second correction at t + dt.
+	/// The second phase at t + dt: detection (or, m_diagnostics.m_secondDetection off, the step's
+	/// own points at refreshed depths), correction, manifolds put back.
 	void correctionPhase(btScalar timeStep);
 
 private:
+	/// Marks the islands of step 2 that hold a stacked body; false if none does.
+	bool markStackedIslands();
+	/// Step 4: broadphase bounds enclosing t and t + dt, new pairs, narrowphase of the pairs.
+	void detectCollisionsAfterStep(bool allPairs);
+	void saveManifolds();
+	void restoreManifolds(ContactDestroyedCallback destroyed, ContactEndedCallback ended);
+
 	btShockPropagationConstraintSolver* m_shockSolver;
+
+	// Second phase working sets (memory kept across steps).
+	btAlignedObjectArray<char> m_stackedIsland;               // by island tag
+	btAlignedObjectArray<btPersistentManifold*> m_savedManifolds;
+	btAlignedObjectArray<const btCollisionObject*> m_savedBodies;  // two per saved manifold
+	btAlignedObjectArray<int> m_savedFirstPoint;             // one more than saved manifolds
+	btAlignedObjectArray<btManifoldPoint> m_savedPoints;
+	btAlignedObjectArray<char> m_savedFound;
+	btAlignedObjectArray<int> m_savedByPointer;  // saved indices by address (after a release)
 };
 
 #endif  // BT_SHOCK_PROPAGATION_DYNAMICS_WORLD_H
