@@ -42,7 +42,7 @@ subject to the following restrictions:
 
 namespace
 {
-const btScalar kSpanMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: a body's support rows span six directions
+const btScalar kSpanMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: a body's support rows span six directions (welds too)
 }  // namespace
 
 void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodies, const btAlignedObjectArray<int>& heightOfSolverBody)
@@ -67,29 +67,20 @@ void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodi
 			for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j)
 			{
 				Row& r = m_rows[m_supportRows[j]];
-				if (!r.m_fixed || m_grounded[fixedSide(r)] == 1) continue;
-				r.m_fixed = 0;
-				r.m_free = -1;
-				r.m_scale = 1;
+				if (r.m_fixed && m_grounded[fixedSide(r)] != 1) freeBothSides(r);
 			}
-			m_grounded[b] = supportsSpanSix(b);
-			if (!m_grounded[b])  // not held: its rows to the bodies under it are free on both sides
-				for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j)
-				{
-					Row& r = m_rows[m_supportRows[j]];
-					r.m_fixed = 0;
-					r.m_free = -1;
-					r.m_scale = 1;
-				}
-			m_grounded[b] = m_grounded[b] ? 1 : 2;  // 2: decided, not grounded
+			btCholesky6 span;
+			const bool grounded = supportFactor(b, span);
+			if (!grounded)  // not held: its rows to the bodies under it are free on both sides
+				for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j) freeBothSides(m_rows[m_supportRows[j]]);
+			m_grounded[b] = grounded ? 1 : 2;  // 2: decided, not grounded
 		}
-	for (int i = 0; i < bodies.size(); ++i) m_grounded[i] = m_grounded[i] == 1;
 }
 
-bool btShockPredictor::supportsSpanSix(int body) const
+bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
 {
-	// sum over the body's one-sided support rows of J_r J_r^T (its side) has full rank: the rows
-	// fix all six degrees of freedom.
+	// A = sum over the body's one-sided support rows of J_r J_r^T (its side), factored: it has
+	// full rank where the rows fix all six degrees of freedom.
 	btScalar A[6][6] = {};
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
@@ -101,8 +92,7 @@ bool btShockPredictor::supportsSpanSix(int body) const
 		for (int i = 0; i < 6; ++i)
 			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
 	}
-	btCholesky6 span;
-	return span.factor(A, btScalar(0), kSpanMinPivot, true);
+	return factor.factor(A, btScalar(0), kSpanMinPivot, true);
 }
 
 bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed)
@@ -110,16 +100,15 @@ bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBod
 	// Held: the support rows fix all six of the body's degrees of freedom (a body on one point or
 	// one edge can still turn about it) and every one's relative velocity (whole velocities, not
 	// Bullet's deltas) is within the convergence speed.
-	if (!supportsSpanSix(body)) return false;
+	btCholesky6 span;
+	if (!supportFactor(body, span)) return false;
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
 		const btSolverConstraint& c = *m_rows[m_supportRows[k]].m_row;
 		btSolverBody& a = bodies[c.m_solverBodyIdA];
 		btSolverBody& b = bodies[c.m_solverBodyIdB];
-		const btScalar v = c.m_contactNormal1.dot(a.m_linearVelocity + a.m_externalForceImpulse + a.internalGetDeltaLinearVelocity()) +
-						   c.m_relpos1CrossNormal.dot(a.m_angularVelocity + a.m_externalTorqueImpulse + a.internalGetDeltaAngularVelocity()) +
-						   c.m_contactNormal2.dot(b.m_linearVelocity + b.m_externalForceImpulse + b.internalGetDeltaLinearVelocity()) +
-						   c.m_relpos2CrossNormal.dot(b.m_angularVelocity + b.m_externalTorqueImpulse + b.internalGetDeltaAngularVelocity());
+		const btScalar v = c.m_contactNormal1.dot(wholeLinear(a)) + c.m_relpos1CrossNormal.dot(wholeAngular(a)) +
+						   c.m_contactNormal2.dot(wholeLinear(b)) + c.m_relpos2CrossNormal.dot(wholeAngular(b));
 		if (btFabs(v) > speed) return false;
 	}
 	return true;

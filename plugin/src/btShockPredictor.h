@@ -115,6 +115,23 @@ private:
 		return (sideA ? c.m_contactNormal1 : c.m_contactNormal2).dot(body.internalGetDeltaLinearVelocity()) +
 			   (sideA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(body.internalGetDeltaAngularVelocity());
 	}
+	/// A body's whole velocity (Bullet keeps it as the step's start, the external impulse and the
+	/// solver's delta).
+	static btVector3 wholeLinear(btSolverBody& body)
+	{
+		return body.m_linearVelocity + body.m_externalForceImpulse + body.internalGetDeltaLinearVelocity();
+	}
+	static btVector3 wholeAngular(btSolverBody& body)
+	{
+		return body.m_angularVelocity + body.m_externalTorqueImpulse + body.internalGetDeltaAngularVelocity();
+	}
+	/// A row that is solved with both bodies free, as Bullet's own.
+	static void freeBothSides(Row& r)
+	{
+		r.m_fixed = 0;
+		r.m_free = -1;
+		r.m_scale = 1;
+	}
 	/// The free side's Jacobian of a one-sided row (linear, angular about the free body's centre).
 	static void freeSide(const Row& r, btVector3& n, btVector3& cr)
 	{
@@ -137,7 +154,7 @@ private:
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
-	bool supportsSpanSix(int body) const;
+	bool supportFactor(int body, struct btCholesky6& factor) const;
 	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
@@ -173,7 +190,7 @@ private:
 	};
 	void bucketSupportRows(int numBodies);
 	void groundRows(const btAlignedObjectArray<btSolverBody>& bodies, const btAlignedObjectArray<int>& heightOfSolverBody);
-	btAlignedObjectArray<char> m_grounded;  // per solver body: held by the ground through one-sided support rows
+	btAlignedObjectArray<char> m_grounded;  // groundRows: per solver body, 0 undecided, 1 grounded, 2 not grounded
 	// Support blocks (btSupportBlocks.cpp): each free body's pushing support rows solved at once.
 	void solveBlocks(int layer, const Pools& pools);
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);

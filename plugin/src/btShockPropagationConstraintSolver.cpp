@@ -181,7 +181,6 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 	// the processing threshold, so a manifold's rows are consecutive and point into its cache.
 	const int numRows = m_tmpSolverContactConstraintPool.size();
 	m_contactRowLayer.resize(numRows);
-	m_contactRowManifold.resize(numRows);
 	int row = 0;
 	for (int i = 0; i < m_manifolds.size() && row < numRows; ++i)
 	{
@@ -194,14 +193,12 @@ void btShockPropagationConstraintSolver::assignRowsToLayers()
 		{
 			const btManifoldPoint* cp = static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[row].m_originalContactPoint);
 			if (cp < first || cp >= last) break;
-			m_contactRowManifold[row] = i;
 			m_contactRowLayer[row++] = layer;
 		}
 	}
 	for (; row < numRows; ++row)
 	{
 		m_contactRowLayer[row] = -1;
-		m_contactRowManifold[row] = -1;
 	}
 
 	m_solverBodyOfNode.resize(m_bodies.size());

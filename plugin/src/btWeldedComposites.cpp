@@ -44,18 +44,6 @@ subject to the following restrictions:
 
 namespace
 {
-const btScalar kWeldMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: rows of a weld span six directions
-
-btVector3 linearVelocity(btSolverBody& body)
-{
-	return body.m_linearVelocity + body.m_externalForceImpulse + body.internalGetDeltaLinearVelocity();
-}
-
-btVector3 angularVelocity(btSolverBody& body)
-{
-	return body.m_angularVelocity + body.m_externalTorqueImpulse + body.internalGetDeltaAngularVelocity();
-}
-
 bool unitFactors(const btSolverBody& body)
 {
 	return body.m_linearFactor == btVector3(1, 1, 1) && body.m_angularFactor == btVector3(1, 1, 1);
@@ -71,26 +59,18 @@ void btShockPredictor::applyToBoth(Row& r, btScalar impulse, btAlignedObjectArra
 
 bool btShockPredictor::weldFactor(int body, btCholesky6& factor) const
 {
-	// A = sum over the body's support rows of J_r J_r^T (the body's side): a pair in contact (one
-	// point pushing) whose points span the six directions. Which of its points push is the
-	// load's business (a resting box may carry its load on two of four corners).
-	btScalar A[6][6] = {};
+	// A pair in contact (one point pushing) whose points span the six directions
+	// (supportFactor). Which of its points push is the load's business (a resting box may carry
+	// its load on two of four corners).
 	int pushing = 0, points = 0;
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
 		const Row& r = m_rows[m_supportRows[k]];
-		if (!r.m_normal)
-		{
-			++points;
-			if (r.m_row->m_appliedImpulse > btScalar(0)) ++pushing;
-		}
-		btVector3 n, cr;
-		freeSide(r, n, cr);
-		const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
-		for (int i = 0; i < 6; ++i)
-			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
+		if (r.m_normal) continue;
+		++points;
+		if (r.m_row->m_appliedImpulse > btScalar(0)) ++pushing;
 	}
-	return pushing >= 1 && points >= 3 && factor.factor(A, btScalar(0), kWeldMinPivot, true);
+	return pushing >= 1 && points >= 3 && supportFactor(body, factor);
 }
 
 void btShockPredictor::findWelds(const Pools& pools)
@@ -187,9 +167,9 @@ void btShockPredictor::formComposites(int layer, const Pools& pools, btScalar he
 		{
 			btSolverBody& body = bodies[m_members[k]];
 			const btRigidBody* rb = body.m_originalBody;
-			const btVector3 p = linearVelocity(body) / rb->getInvMass();
+			const btVector3 p = wholeLinear(body) / rb->getInvMass();
 			momentum += p;
-			spin += rb->getInvInertiaTensorWorld().inverse() * angularVelocity(body) + (body.getWorldTransform().getOrigin() - center).cross(p);
+			spin += rb->getInvInertiaTensorWorld().inverse() * wholeAngular(body) + (body.getWorldTransform().getOrigin() - center).cross(p);
 		}
 		comp.m_v0 = momentum * comp.m_invMass;
 		comp.m_w0 = comp.m_invInertia * spin;
@@ -270,8 +250,8 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools)
 			btSolverBody& body = bodies[m];
 			const btRigidBody* rb = body.m_originalBody;
 			const btVector3 x = body.getWorldTransform().getOrigin();
-			btVector3 force = (v + w.cross(x - comp.m_center) - linearVelocity(body)) / rb->getInvMass();
-			btVector3 moment = rb->getInvInertiaTensorWorld().inverse() * (w - angularVelocity(body));
+			btVector3 force = (v + w.cross(x - comp.m_center) - wholeLinear(body)) / rb->getInvMass();
+			btVector3 moment = rb->getInvInertiaTensorWorld().inverse() * (w - wholeAngular(body));
 			for (int j = m_childStart[m]; j < m_childStart[m + 1]; ++j)
 			{
 				const int child = m_children[j];

@@ -151,7 +151,6 @@ private:
 	btPositionCorrection* m_correction;
 	btShockPredictor* m_predictor;
 	btAlignedObjectArray<int> m_heightOfSolverBody;  // converging step: stack height of each solver body
-	btAlignedObjectArray<int> m_contactRowManifold;  // manifold of each contact row, -1 if none
 
 	// Per step, read-only record for getLayeredBody (capacity kept across steps).
 	btAlignedObjectArray<const btCollisionObject*> m_layeredBodies;
