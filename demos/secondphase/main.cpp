@@ -32,6 +32,46 @@ namespace
 double gSecondFraction = -1;  // --second-fraction: the first rounds' share (default: the settings')
 int gRounds = 0;               // --rounds: rounds of the default world row (default: the settings')
 
+/// A static ground and a column of n 1 m cubes, each 10 micrometres into the one below (so that
+/// the first step has its contacts), awake; more boxes by add(). Removed from the world when it goes.
+class CubeColumn
+{
+public:
+	static constexpr double kOverlap = 1e-5;  // m
+
+	CubeColumn(btDiscreteDynamicsWorld& world, int n) : m_world(world)
+	{
+		add(btVector3(50, 0.5, 50), 0, btVector3(0, -0.5, 0));
+		for (int i = 0; i < n; ++i) m_cubes.push_back(add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(0.5 + i - kOverlap * (i + 1)), 0)));
+	}
+	~CubeColumn()
+	{
+		for (auto& b : m_bodies) m_world.removeRigidBody(b.get());
+	}
+	CubeColumn(const CubeColumn&) = delete;
+	CubeColumn& operator=(const CubeColumn&) = delete;
+
+	btRigidBody* add(const btVector3& half, double mass, const btVector3& at)
+	{
+		m_shapes.emplace_back(new btBoxShape(half));
+		btVector3 inertia(0, 0, 0);
+		if (mass > 0) m_shapes.back()->calculateLocalInertia(btScalar(mass), inertia);
+		btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, m_shapes.back().get(), inertia);
+		info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), at);
+		m_bodies.emplace_back(new btRigidBody(info));
+		m_bodies.back()->setActivationState(DISABLE_DEACTIVATION);
+		m_world.addRigidBody(m_bodies.back().get());
+		return m_bodies.back().get();
+	}
+	const std::vector<btRigidBody*>& cubes() const { return m_cubes; }
+
+private:
+	btDiscreteDynamicsWorld& m_world;
+	std::vector<std::unique_ptr<btCollisionShape>> m_shapes;
+	std::vector<std::unique_ptr<btRigidBody>> m_bodies;
+	std::vector<btRigidBody*> m_cubes;
+};
+
 struct Variant
 {
 	const char* name;
@@ -95,25 +135,10 @@ void landing()
 	{
 		harness::Simulation sim(specOf(v));
 		btDiscreteDynamicsWorld& world = sim.world();
-		std::vector<std::unique_ptr<btCollisionShape>> shapes;
-		std::vector<std::unique_ptr<btRigidBody>> bodies;
-		auto add = [&](const btVector3& half, double mass, const btVector3& at) {
-			shapes.emplace_back(new btBoxShape(half));
-			btVector3 inertia(0, 0, 0);
-			if (mass > 0) shapes.back()->calculateLocalInertia(btScalar(mass), inertia);
-			btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, shapes.back().get(), inertia);
-			info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), at);
-			bodies.emplace_back(new btRigidBody(info));
-			bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-			world.addRigidBody(bodies.back().get());
-			return bodies.back().get();
-		};
-		add(btVector3(50, 0.5, 50), 0, btVector3(0, -0.5, 0));
-		std::vector<btRigidBody*> dynamic;
-		const double overlap = 1e-5;
-		for (int i = 0; i < 3; ++i) dynamic.push_back(add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(0.5 + i - overlap * (i + 1)), 0)));
-		const double top = 3 - 3 * overlap;
-		btRigidBody* falling = add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(top + 0.05 + 0.5), 0));
+		CubeColumn column(world, 3);
+		std::vector<btRigidBody*> dynamic = column.cubes();
+		const double top = 3 - 3 * CubeColumn::kOverlap;
+		btRigidBody* falling = column.add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(top + 0.05 + 0.5), 0));
 		falling->setLinearVelocity(btVector3(0, -6, 0));
 		dynamic.push_back(falling);
 		double landed = -1, after = 0;
@@ -135,7 +160,6 @@ void landing()
 		}
 		const double slop = 0.18 * 9.81 / 3600.0;
 		std::printf("%-32s %11.2f mm %11.2f mm %11.2f mm\n", v.name, landed * 1e3, after * 1e3, slop * 1e3);
-		for (auto& b : bodies) world.removeRigidBody(b.get());
 	}
 }
 
@@ -153,28 +177,12 @@ void ripple()
 		const Variant& v = kVariants[k];
 		harness::Simulation sim(specOf(v));
 		btDiscreteDynamicsWorld& world = sim.world();
-		std::vector<std::unique_ptr<btCollisionShape>> shapes;
-		std::vector<std::unique_ptr<btRigidBody>> bodies;
-		auto add = [&](const btVector3& half, double mass, const btVector3& at) {
-			shapes.emplace_back(new btBoxShape(half));
-			btVector3 inertia(0, 0, 0);
-			if (mass > 0) shapes.back()->calculateLocalInertia(btScalar(mass), inertia);
-			btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, shapes.back().get(), inertia);
-			info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), at);
-			bodies.emplace_back(new btRigidBody(info));
-			bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-			world.addRigidBody(bodies.back().get());
-			return bodies.back().get();
-		};
-		add(btVector3(50, 0.5, 50), 0, btVector3(0, -0.5, 0));
-		std::vector<btRigidBody*> dynamic;
-		const double overlap = 1e-5;
-		const int n = 20;
-		for (int i = 0; i < n; ++i) dynamic.push_back(add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(0.5 + i - overlap * (i + 1)), 0)));
+		CubeColumn column(world, 20);
+		const std::vector<btRigidBody*> dynamic = column.cubes();
 		// Let the tower settle with the cube held away, then drop it.
 		for (int i = 0; i < 60; ++i) sim.step();
 		const double top = dynamic.back()->getWorldTransform().getOrigin().y() + 0.5;
-		btRigidBody* falling = add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(top + 0.05 + 0.5), 0));
+		btRigidBody* falling = column.add(btVector3(0.5, 0.5, 0.5), 1, btVector3(0, btScalar(top + 0.05 + 0.5), 0));
 		falling->setLinearVelocity(btVector3(0, -6, 0));
 		std::vector<btRigidBody*> all = dynamic;
 		all.push_back(falling);
@@ -189,7 +197,6 @@ void ripple()
 			rows.push_back(std::make_pair(deepest, speed));
 		}
 		trace.push_back(rows);
-		for (auto& b : bodies) world.removeRigidBody(b.get());
 	}
 	for (int i = 0; i < 12; ++i)
 	{
