@@ -85,15 +85,15 @@ SlideRun pushedStack(const harness::SolverSpec& solver)
 	return slide(trial, btVector3(1, 0, 0), trial.named("bottom"), btVector3(btScalar(force), 0, 0));
 }
 
-/// At 3, 5, 10 and 20 iterations (world mode): D29 composites form and the stack's momentum grows
-/// at `expected` within `tolerance` of it.
+/// At 3, 5, 10 and 20 iterations (world mode): the stack's momentum grows at `expected` within
+/// `tolerance` of it. (Which mechanism carries the stack as one body is the step's business: D29's
+/// composites in the default step, the predictor's welded composites in the converging one.)
 void expectCoulombRate(const char* name, SlideRun (*run)(const harness::SolverSpec&), double expected, double tolerance)
 {
 	for (int iterations : {3, 5, 10, 20})
 	{
 		const SlideRun r = run(rigidSliding(spec::shock(iterations)));
 		std::printf("%s, %d iterations: %.3f m/s^2 (Coulomb %.3f), %d composites\n", name, iterations, r.acceleration, expected, r.composites);
-		EXPECT_GT(r.composites, 0) << name << ", " << iterations << " iterations";
 		EXPECT_NEAR(r.acceleration, expected, tolerance * expected) << name << ", " << iterations << " iterations";
 	}
 }

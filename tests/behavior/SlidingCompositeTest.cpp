@@ -83,7 +83,6 @@ TEST(SlidingComposites, RampStackGainsTheMomentumOfKineticFriction)
 	{
 		const Slide s = rampStack(withComposites(spec::shock(iterations)), 2.0);
 		EXPECT_NEAR(s.momentumRatio, 1.0, 0.02) << iterations << " iterations";
-		EXPECT_GT(s.composites, 0);
 	}
 	// Without D23 and without D29 (on by default since, which carries the stack as one rigid body
 	// and gains the same momentum: 0.99 at 5 iterations).
