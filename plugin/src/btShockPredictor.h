@@ -191,6 +191,22 @@ private:
 	void bucketSupportRows(int numBodies);
 	void groundRows(const btAlignedObjectArray<btSolverBody>& bodies, const btAlignedObjectArray<int>& heightOfSolverBody);
 	btAlignedObjectArray<char> m_grounded;  // groundRows: per solver body, 0 undecided, 1 grounded, 2 not grounded
+	// Clusters (groundRows): a layer's bodies not grounded alone, joined by the layer's rows among them.
+	struct ClusterNode
+	{
+		int m_parent;      // union-find
+		int m_index;       // position among its cluster's members
+		int m_nextMember;  // members of a root, linked
+		int m_firstMember;
+		int m_firstRow;  // a root's rows among its members or to the layer's grounded bodies, linked by m_clusterRowNext
+		int m_size;
+	};
+	int findCluster(int body);
+	bool clusterSpans(int root);
+	btAlignedObjectArray<int> m_loose;  // groundRows: the layer's free bodies not grounded alone
+	btAlignedObjectArray<ClusterNode> m_clusterNodes;
+	btAlignedObjectArray<int> m_clusterRowNext;  // per row
+	btAlignedObjectArray<btScalar> m_clusterMatrix;  // the cluster's 6 n x 6 n normal equations
 	// Support blocks (btSupportBlocks.cpp): each free body's pushing support rows solved at once.
 	void solveBlocks(int layer, const Pools& pools);
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
