@@ -159,18 +159,7 @@ bool btShockPredictor::clusterSpans(int root)
 	m_clusterMatrix.resize(size * size);
 	for (int i = 0; i < size * size; ++i) m_clusterMatrix[i] = 0;
 	btScalar* A = &m_clusterMatrix[0];
-	for (int b = node.m_firstMember; b >= 0; b = m_clusterNodes[b].m_nextMember)
-		for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j)
-		{
-			const Row& r = m_rows[m_supportRows[j]];
-			if (!r.m_fixed) continue;
-			btVector3 n, cr;
-			freeSide(r, n, cr);
-			const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
-			const int o = 6 * m_clusterNodes[b].m_index;
-			for (int p = 0; p < 6; ++p)
-				for (int q = 0; q <= p; ++q) A[(o + p) * size + o + q] += J[p] * J[q];
-		}
+	for (int b = node.m_firstMember; b >= 0; b = m_clusterNodes[b].m_nextMember) addSupportRows(b, A, size, 6 * m_clusterNodes[b].m_index);
 	for (int i = node.m_firstRow; i >= 0; i = m_clusterRowNext[i])
 	{
 		const btSolverConstraint& c = *m_rows[i].m_row;
@@ -212,11 +201,10 @@ bool btShockPredictor::clusterSpans(int root)
 	return true;
 }
 
-bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
+void btShockPredictor::addSupportRows(int body, btScalar* A, int stride, int offset) const
 {
-	// A = sum over the body's one-sided support rows of J_r J_r^T (its side), factored: it has
-	// full rank where the rows fix all six degrees of freedom.
-	btScalar A[6][6] = {};
+	// Adds J_r J_r^T (the body's side) of each one-sided support row to the lower triangle of the
+	// 6 x 6 block of A (row length stride) that starts at (offset, offset).
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
 		const Row& r = m_rows[m_supportRows[k]];
@@ -225,8 +213,16 @@ bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
 		freeSide(r, n, cr);
 		const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
 		for (int i = 0; i < 6; ++i)
-			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
+			for (int j = 0; j <= i; ++j) A[(offset + i) * stride + offset + j] += J[i] * J[j];
 	}
+}
+
+bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
+{
+	// A = sum over the body's one-sided support rows of J_r J_r^T (its side), factored: it has
+	// full rank where the rows fix all six degrees of freedom.
+	btScalar A[6][6] = {};
+	addSupportRows(body, &A[0][0], 6, 0);
 	return factor.factor(A, btScalar(0), kSpanMinPivot, true);
 }
 

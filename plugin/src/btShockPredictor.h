@@ -155,6 +155,7 @@ private:
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
 	bool supportFactor(int body, struct btCholesky6& factor) const;
+	void addSupportRows(int body, btScalar* A, int stride, int offset) const;
 	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
