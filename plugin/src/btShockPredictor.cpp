@@ -130,7 +130,6 @@ void btShockPredictor::bucketSupportRows(int numBodies)
 	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
 	for (int i = 0; i < m_rows.size(); ++i)
 		if (m_rows[i].m_free >= 0) m_supportRows[m_count[m_rows[i].m_free]++] = i;
-
 }
 
 void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
@@ -229,8 +228,6 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	}
 	return run;
 }
-
-
 
 int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
 {
