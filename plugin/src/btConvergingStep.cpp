@@ -90,13 +90,23 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 {
 	const btShockPredictor::Pools pools{m_tmpSolverBodyPool, m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool,
 										m_tmpSolverContactRollingFrictionConstraintPool};
-	// Stack height of each solver body; static and kinematic ones (Bullet's fixed body) are 0.
+	// Stack height and contact-graph component of each solver body; static and kinematic ones
+	// (Bullet's fixed body) are at height 0 in no component (-1).
 	m_heightOfSolverBody.resize(m_tmpSolverBodyPool.size());
-	for (int i = 0; i < m_heightOfSolverBody.size(); ++i) m_heightOfSolverBody[i] = 0;
+	m_componentOfSolverBody.resize(m_tmpSolverBodyPool.size());
+	for (int i = 0; i < m_heightOfSolverBody.size(); ++i)
+	{
+		m_heightOfSolverBody[i] = 0;
+		m_componentOfSolverBody[i] = -1;
+	}
 	for (int i = 0; i < m_bodies.size(); ++i)
 		if (m_solverBodyOfNode[i] >= 0 && m_solverBodyOfNode[i] < m_heightOfSolverBody.size())
+		{
 			m_heightOfSolverBody[m_solverBodyOfNode[i]] = m_layers.getHeight(i);
-	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody);
+			m_componentOfSolverBody[m_solverBodyOfNode[i]] = m_layers.getComponent(i);
+		}
+	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody, m_componentOfSolverBody,
+					   m_layers.getNumComponents());
 	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;
 	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling, m_settings.m_diagnostics.m_predictorCycles);

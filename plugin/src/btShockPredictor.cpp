@@ -73,9 +73,14 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 }
 
 void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedObjectArray<int>& contactRowLayer,
-							 const btAlignedObjectArray<int>& heightOfSolverBody)
+							 const btAlignedObjectArray<int>& heightOfSolverBody, const btAlignedObjectArray<int>& componentOfSolverBody,
+							 int numComponents)
 {
 	m_numLayers = numLayers;
+	m_componentOfSolverBody = &componentOfSolverBody;
+	m_slope.resize(numComponents);
+	m_curvature.resize(numComponents);
+	m_alpha.resize(numComponents);
 	const int keys = numLayers * 3;
 	m_count.resize(keys + 1);
 	for (int i = 0; i <= keys; ++i) m_count[i] = 0;
@@ -150,19 +155,23 @@ void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
 btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies)
 {
 	// The passes changed the bodies' velocities from u to u + du (every impulse delivered to both
-	// bodies by now). Along u + alpha du the kinetic energy is
+	// bodies by now). Along u + alpha du the kinetic energy of a contact-graph component is
 	//   E(alpha) = E(0) + alpha du.M u + alpha^2 / 2 du.M du,
-	// so the step taken is alpha = clamp(-du.M u / du.M du, 0, 1): contact impulses are passive,
-	// and where fixation is wrong (a support that slides: the up pass drags every body to the
-	// bottom one's velocity and the delivered reactions hand the bottom body the carried mass
-	// times its error) the step that would add energy is shortened. The impulses are scaled alike,
-	// so the velocities stay those of the impulses and Newton's third law holds for any alpha.
-	btScalar slope = 0, curvature = 0;
+	// so its step is alpha = clamp(-du.M u / du.M du, 0, 1): contact impulses are passive, and
+	// where fixation is wrong (a support that slides: the up pass drags every body to the bottom
+	// one's velocity and the delivered reactions hand the bottom body the carried mass times its
+	// error) the step that would add energy is shortened. Components share no row, so each is
+	// searched on its own: a ball's rebound beside a tower, which no minimum of E keeps, does not
+	// shorten the tower's step. The impulses are scaled alike, so the velocities stay those of the
+	// impulses and Newton's third law holds for any alpha. Returns the smallest alpha taken.
+	const btAlignedObjectArray<int>& componentOf = *m_componentOfSolverBody;
+	for (int c = 0; c < m_slope.size(); ++c) m_slope[c] = m_curvature[c] = 0;
 	for (int i = 0; i < bodies.size(); ++i)
 	{
 		btSolverBody& body = bodies[i];
 		const btRigidBody* rb = body.m_originalBody;
-		if (!rb || !(rb->getInvMass() > btScalar(0))) continue;
+		const int component = i < componentOf.size() ? componentOf[i] : -1;
+		if (!rb || !(rb->getInvMass() > btScalar(0)) || component < 0) continue;
 		const btVector3 dv = body.internalGetDeltaLinearVelocity() - m_startLinear[i];
 		const btVector3 dw = body.internalGetDeltaAngularVelocity() - m_startAngular[i];
 		if (dv.isZero() && dw.isZero()) continue;
@@ -173,24 +182,37 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 		// I dw from I^-1 (I dw) = dw: the momentum the passes gave the body's spin.
 		btVector3 Idw(0, 0, 0);
 		if (btFabs(invInertia.determinant()) > SIMD_EPSILON) Idw = invInertia.inverse() * dw;
-		slope += mass * dv.dot(v) + Idw.dot(w);
-		curvature += mass * dv.length2() + Idw.dot(dw);
+		m_slope[component] += mass * dv.dot(v) + Idw.dot(w);
+		m_curvature[component] += mass * dv.length2() + Idw.dot(dw);
 	}
-	if (!(curvature > btScalar(0))) return btScalar(1);
-	const btScalar alpha = btMax(btScalar(0), btMin(btScalar(1), -slope / curvature));
-	if (!(alpha < btScalar(1))) return btScalar(1);
+	btScalar smallest = 1;
+	bool anyShort = false;
+	for (int c = 0; c < m_alpha.size(); ++c)
+	{
+		m_alpha[c] = m_curvature[c] > btScalar(0) ? btMax(btScalar(0), btMin(btScalar(1), -m_slope[c] / m_curvature[c])) : btScalar(1);
+		anyShort = anyShort || m_alpha[c] < btScalar(1);
+		smallest = btMin(smallest, m_alpha[c]);
+	}
+	if (!anyShort) return btScalar(1);
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
 		btSolverConstraint& c = *m_rows[i].m_row;
-		c.m_appliedImpulse = m_rows[i].m_start + alpha * (c.m_appliedImpulse - m_rows[i].m_start);
+		// A row's component is that of its dynamic side (both sides share it when both are).
+		int component = componentOf[c.m_solverBodyIdA];
+		if (component < 0) component = componentOf[c.m_solverBodyIdB];
+		if (component < 0) continue;
+		c.m_appliedImpulse = m_rows[i].m_start + m_alpha[component] * (c.m_appliedImpulse - m_rows[i].m_start);
 	}
 	for (int i = 0; i < bodies.size(); ++i)
 	{
+		const int component = i < componentOf.size() ? componentOf[i] : -1;
+		if (component < 0) continue;
+		const btScalar alpha = m_alpha[component];
 		btSolverBody& body = bodies[i];
 		body.internalGetDeltaLinearVelocity() = m_startLinear[i] + alpha * (body.internalGetDeltaLinearVelocity() - m_startLinear[i]);
 		body.internalGetDeltaAngularVelocity() = m_startAngular[i] + alpha * (body.internalGetDeltaAngularVelocity() - m_startAngular[i]);
 	}
-	return alpha;
+	return smallest;
 }
 
 btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& bodies)

@@ -52,8 +52,10 @@ class btStackLayers;
 /// body to the bottom one's velocity and the delivered reactions hand the bottom body (carried
 /// mass / its mass) times its error. The passes move the bodies' velocities from u to u + du;
 /// along u + alpha du the kinetic energy is E(0) + alpha du.M u + alpha^2/2 du.M du, and the
-/// predictor takes alpha = clamp(-du.M u / du.M du, 0, 1), scaling the impulse changes alike:
-/// contact impulses are passive, and Newton's third law holds for any alpha. (PGS's own objective
+/// predictor takes alpha = clamp(-du.M u / du.M du, 0, 1) for each contact-graph component on
+/// its own (a ball's rebound, which no minimum of E keeps, then does not shorten the step of a
+/// tower solved in the same group), scaling the impulse changes alike: contact impulses are
+/// passive, and Newton's third law holds for any alpha. (PGS's own objective
 /// is no measure here: with Coulomb friction its bounds move with the normal impulses, and a
 /// search on it stopped a resting tower's predictor; docs/design.md, section 4u.)
 class btShockPredictor
@@ -69,9 +71,11 @@ public:
 
 	/// Bucket the rows by layer. contactRowLayer: layer of each contact row (-1: in no layer);
 	/// heightOfSolverBody: stack height of each solver body (0: static or kinematic, -1: in a
-	/// component without a root, never fixated).
+	/// component without a root, never fixated); componentOfSolverBody: its contact-graph
+	/// component (0 .. numComponents - 1; -1: static or kinematic), each searched on its own.
 	void build(const Pools& pools, int numLayers, const btAlignedObjectArray<int>& contactRowLayer,
-			   const btAlignedObjectArray<int>& heightOfSolverBody);
+			   const btAlignedObjectArray<int>& heightOfSolverBody, const btAlignedObjectArray<int>& componentOfSolverBody,
+			   int numComponents);
 
 	/// Up pass then down pass (or delivery); at most sweeps per layer and pass, a layer ends once
 	/// a sweep changes no row's velocity by more than convergedSpeed (m/s). Returns sweeps run.
@@ -166,6 +170,8 @@ private:
 	btScalar lineSearch(btAlignedObjectArray<btSolverBody>& bodies);
 
 	int m_numLayers = 0;
+	const btAlignedObjectArray<int>* m_componentOfSolverBody = 0;
+	btAlignedObjectArray<btScalar> m_slope, m_curvature, m_alpha;  // line search, per component
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
 	btAlignedObjectArray<btVector3> m_sweepLinear, m_sweepAngular;  // per solver body, before the current sweep
 	btAlignedObjectArray<Row> m_rows;        // by layer

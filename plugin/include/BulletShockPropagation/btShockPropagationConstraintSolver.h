@@ -151,6 +151,7 @@ private:
 	btPositionCorrection* m_correction;
 	btShockPredictor* m_predictor;
 	btAlignedObjectArray<int> m_heightOfSolverBody;  // converging step: stack height of each solver body
+	btAlignedObjectArray<int> m_componentOfSolverBody;  // converging step: contact-graph component of each solver body
 
 	// Per step, read-only record for getLayeredBody (capacity kept across steps).
 	btAlignedObjectArray<const btCollisionObject*> m_layeredBodies;
