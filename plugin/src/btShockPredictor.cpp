@@ -186,14 +186,12 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 		m_curvature[component] += mass * dv.length2() + Idw.dot(dw);
 	}
 	btScalar smallest = 1;
-	bool anyShort = false;
 	for (int c = 0; c < m_alpha.size(); ++c)
 	{
 		m_alpha[c] = m_curvature[c] > btScalar(0) ? btMax(btScalar(0), btMin(btScalar(1), -m_slope[c] / m_curvature[c])) : btScalar(1);
-		anyShort = anyShort || m_alpha[c] < btScalar(1);
-		smallest = btMin(smallest, m_alpha[c]);
+		if (m_alpha[c] < smallest) smallest = m_alpha[c];
 	}
-	if (!anyShort) return btScalar(1);
+	if (!(smallest < btScalar(1))) return btScalar(1);
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
 		btSolverConstraint& c = *m_rows[i].m_row;
