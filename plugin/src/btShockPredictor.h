@@ -174,6 +174,7 @@ private:
 	btAlignedObjectArray<btScalar> m_slope, m_curvature, m_alpha;  // line search, per component
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
 	btAlignedObjectArray<btVector3> m_sweepLinear, m_sweepAngular;  // per solver body, before the current sweep
+	btAlignedObjectArray<btScalar> m_sweepChange;  // per sweep of the current layer: its largest row velocity change (m/s)
 	btAlignedObjectArray<Row> m_rows;        // by layer
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
 	btAlignedObjectArray<int> m_count, m_cursor;
