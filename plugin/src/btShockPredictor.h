@@ -233,6 +233,8 @@ private:
 	btAlignedObjectArray<int> m_parent;                       // per solver body: the body it is welded to, -1
 	btAlignedObjectArray<int> m_childStart, m_children;
 	btAlignedObjectArray<int> m_compositeOf;                  // per solver body: its composite as root this layer, -1
+	btAlignedObjectArray<int> m_heldVisit;                    // per solver body: the formComposites call that found it held
+	int m_visit = 0;                                          // formComposites calls so far
 	btAlignedObjectArray<Composite> m_composites;
 	btAlignedObjectArray<int> m_members;
 	btAlignedObjectArray<btVector3> m_weldForce, m_weldMoment;  // per solver body, back-substitution scratch
