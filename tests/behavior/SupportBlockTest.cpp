@@ -223,11 +223,11 @@ TEST(ConvergingPredictor, PitLayersThatCannotConvergeEndEarly)
 	// docs/design.md, section 4u: in a pile a free cube wedged between fixated cubes whose
 	// velocities close on it has no velocity that holds both rows, so its layer's sweeps never
 	// reach the convergence speed (the impulses grow by the same amount each sweep). The
-	// predictor ends a layer once its measured rate cannot reach that speed within its sweeps:
-	// over the pit's second second (100 cubes, 10 iterations) it sweeps its layers 637 times a
-	// step, where sweeping each visit to its cap took 1,108 (float). The towers,
-	// whose layers converge within a few sweeps, lose none (the truth suite under the converging
-	// step is unchanged).
+	// predictor ends a layer once its measured rate cannot reach that speed within its sweeps.
+	// Over the pit's second second (100 cubes, 10 iterations) the statistic m_numLayerSweeps
+	// (the converging step: each cycle's longest layer visit, summed) is 637 a step, where
+	// sweeping each visit to its cap gave 1,108 (float). The towers, whose layers converge
+	// within a few sweeps, lose none (the truth suite under the converging step is unchanged).
 	harness::SolverSpec converging = spec::shock();
 	converging.settings.m_diagnostics.m_convergingStep = true;
 	harness::Trial pit(converging, "dense_random");
