@@ -234,7 +234,7 @@ std::vector<RatioCase> ratioCases()
 		{"flat_boxes v0=3 mu=0.1", "flat_boxes", {{"v0", 3}, {"mu", 0.1}}},
 		{"stack_1000", "stack_1000", {}},
 		{"boxes_3000 (10 s)", "boxes_3000", {}, 600},
-		{"dense_random (pile, 10 s)", "dense_random", {}, 600},
+		{"dense_random pile (10 s)", "dense_random", {}, 600},
 	};
 }
 
