@@ -124,7 +124,8 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 
 void btShockPredictor::bucketSupportRows(int numBodies)
 {
-	// Support rows of each body: the rows where it is the free side (all in its layer).
+	// Support rows of each body: the rows where it is the free side (all in its layer); and each
+	// layer's free bodies, once each, in the order of their first rows.
 	m_supportStart.resize(numBodies + 1);
 	for (int i = 0; i <= numBodies; ++i) m_supportStart[i] = 0;
 	for (int i = 0; i < m_rows.size(); ++i)
@@ -133,8 +134,20 @@ void btShockPredictor::bucketSupportRows(int numBodies)
 	m_supportRows.resize(m_supportStart[numBodies]);
 	m_count.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
-	for (int i = 0; i < m_rows.size(); ++i)
-		if (m_rows[i].m_free >= 0) m_supportRows[m_count[m_rows[i].m_free]++] = i;
+	m_layerFreeStart.resize(m_numLayers + 1);
+	m_layerFree.resize(0);
+	for (int k = 0; k < m_numLayers; ++k)
+	{
+		m_layerFreeStart[k] = m_layerFree.size();
+		for (int i = m_layerStart[k]; i < m_layerStart[k + 1]; ++i)
+		{
+			const int b = m_rows[i].m_free;
+			if (b < 0) continue;
+			if (m_count[b] == m_supportStart[b]) m_layerFree.push_back(b);
+			m_supportRows[m_count[b]++] = i;
+		}
+	}
+	m_layerFreeStart[m_numLayers] = m_layerFree.size();
 }
 
 void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)

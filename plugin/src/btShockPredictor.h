@@ -218,7 +218,6 @@ private:
 	// Support blocks (btSupportBlocks.cpp): each free body's pushing support rows solved at once.
 	void solveBlocks(int layer, const Pools& pools);
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
-	btAlignedObjectArray<char> m_blockDone;
 	btAlignedObjectArray<int> m_blockRows;
 	btAlignedObjectArray<btScalar> m_blockError;
 	btAlignedObjectArray<const btSolverConstraint*> m_blockContacts;
@@ -230,11 +229,10 @@ private:
 	bool weldFactor(int body, struct btCholesky6& factor) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
+	btAlignedObjectArray<int> m_layerFreeStart, m_layerFree;  // per layer: its free bodies (bodies with support rows in it)
 	btAlignedObjectArray<int> m_parent;                       // per solver body: the body it is welded to, -1
 	btAlignedObjectArray<int> m_childStart, m_children;
 	btAlignedObjectArray<int> m_compositeOf;                  // per solver body: its composite as root this layer, -1
-	btAlignedObjectArray<int> m_heldVisit;                    // per solver body: the formComposites call that found it held
-	int m_visit = 0;                                          // formComposites calls so far
 	btAlignedObjectArray<Composite> m_composites;
 	btAlignedObjectArray<int> m_members;
 	btAlignedObjectArray<btVector3> m_weldForce, m_weldMoment;  // per solver body, back-substitution scratch

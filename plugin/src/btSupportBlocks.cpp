@@ -39,17 +39,7 @@ const btScalar kBlockMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: the blo
 
 void btShockPredictor::solveBlocks(int layer, const Pools& pools)
 {
-	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
-	m_blockDone.resize(bodies.size());
-	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
-		if (m_rows[i].m_free >= 0) m_blockDone[m_rows[i].m_free] = 0;
-	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
-	{
-		const int b = m_rows[i].m_free;
-		if (b < 0 || m_blockDone[b]) continue;
-		m_blockDone[b] = 1;
-		solveBlock(b, bodies);
-	}
+	for (int i = m_layerFreeStart[layer]; i < m_layerFreeStart[layer + 1]; ++i) solveBlock(m_layerFree[i], pools.m_bodies);
 }
 
 void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bodies)

@@ -42,8 +42,6 @@ subject to the following restrictions:
 
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
-#include <climits>
-
 namespace
 {
 bool unitFactors(const btSolverBody& body)
@@ -120,26 +118,10 @@ void btShockPredictor::formComposites(int layer, const Pools& pools, btScalar he
 	for (int i = 0; i < m_composites.size(); ++i) m_compositeOf[m_composites[i].m_root] = -1;
 	m_composites.resize(0);
 	m_members.resize(0);
-	// A body has a row per point and friction direction: it is tested once per call.
-	if (m_heldVisit.size() != bodies.size())
+	for (int i = m_layerFreeStart[layer]; i < m_layerFreeStart[layer + 1]; ++i)
 	{
-		m_heldVisit.resize(bodies.size());
-		for (int i = 0; i < bodies.size(); ++i) m_heldVisit[i] = -1;
-	}
-	if (++m_visit == INT_MAX)
-	{
-		for (int i = 0; i < m_heldVisit.size(); ++i) m_heldVisit[i] = -1;
-		m_visit = 0;
-	}
-	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
-	{
-		const int root = m_rows[i].m_free;
-		if (root < 0 || m_compositeOf[root] >= 0 || m_childStart[root] == m_childStart[root + 1] || m_heldVisit[root] == m_visit) continue;
-		if (heldBySupports(root, bodies, heldSpeed))
-		{
-			m_heldVisit[root] = m_visit;
-			continue;
-		}
+		const int root = m_layerFree[i];
+		if (m_childStart[root] == m_childStart[root + 1] || heldBySupports(root, bodies, heldSpeed)) continue;
 		Composite comp;
 		comp.m_root = root;
 		comp.m_first = m_members.size();
