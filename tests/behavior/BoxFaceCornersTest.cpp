@@ -211,12 +211,7 @@ TEST(BoxFaceCorners, RestingStacksAddNone)
 			 {"tower", {{"n", 20}}}, {"wall", {}}, {"pyramid", {{"base", 10}}}})
 	{
 		harness::Trial trial(spec::shock(), scene.first, scene.second);
-		long corners = 0;
-		for (int k = 0; k < 120; ++k)
-		{
-			trial.step();
-			corners += trial.simulation().shockSolver()->getStatistics().m_numBoxFaceCorners;
-		}
+		const long corners = spec::sumOverSteps(trial, 120, &btShockPropagationStatistics::m_numBoxFaceCorners);
 		EXPECT_EQ(corners, 0) << scene.first;
 		EXPECT_LT(trial.summary().maxDrift, 0.01) << scene.first;
 	}

@@ -3,6 +3,7 @@
 // unless the test says otherwise; "standing" is harness::kStandingDriftMeters.
 #pragma once
 
+#include <BulletShockPropagation/btShockPropagationConstraintSolver.h>
 #include <BulletShockPropagation/btShockPropagationSettings.h>
 #include <harness/Metrics.h>
 #include <harness/Trial.h>
@@ -58,6 +59,19 @@ inline harness::SolverSpec stock(int iterations = 10)
 	s.kind = harness::SolverKind::StockSI;
 	s.iterations = iterations;
 	return s;
+}
+
+/// Steps a plugin trial `steps` times and returns one of the solver's per-step statistics summed
+/// over those steps (e.g. &btShockPropagationStatistics::m_numLayerSweeps).
+inline long sumOverSteps(harness::Trial& trial, int steps, int btShockPropagationStatistics::*statistic)
+{
+	long sum = 0;
+	for (int i = 0; i < steps; ++i)
+	{
+		trial.step();
+		sum += trial.simulation().shockSolver()->getStatistics().*statistic;
+	}
+	return sum;
 }
 
 }  // namespace spec

@@ -97,12 +97,7 @@ TEST(SlidingComposites, RestingStacksFormNone)
 	// A settled tower's supports do not slip: no composite, nothing changes for stacks at rest.
 	harness::Trial tower(withComposites(spec::shock()), "tower", {{"n", 20}});
 	tower.run(1.0);
-	long composites = 0;
-	for (int i = 0; i < 120; ++i)
-	{
-		tower.step();
-		composites += tower.simulation().shockSolver()->getStatistics().m_numSlidingComposites;
-	}
+	const long composites = spec::sumOverSteps(tower, 120, &btShockPropagationStatistics::m_numSlidingComposites);
 	EXPECT_EQ(composites, 0);
 	EXPECT_LT(tower.maxDrift(), harness::kStandingDriftMeters);
 }

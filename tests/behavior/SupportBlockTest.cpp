@@ -99,13 +99,7 @@ TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
 	// falling into a pit never converge within ceil(f N) = 5 sweeps, so they run every one.
 	harness::Trial pyramid(spec::shock(), "pyramid", {{"base", 10}});
 	pyramid.run(2.0);
-	const btShockPropagationConstraintSolver& solver = *pyramid.simulation().shockSolver();
-	long sweeps = 0;
-	for (int i = 0; i < 60; ++i)
-	{
-		pyramid.step();
-		sweeps += solver.getStatistics().m_numGlobalSweeps;
-	}
+	const long sweeps = spec::sumOverSteps(pyramid, 60, &btShockPropagationStatistics::m_numGlobalSweeps);
 	EXPECT_LE(double(sweeps) / 60.0, 1.1) << "global sweeps per step";
 	pyramid.run(8.0);
 	EXPECT_LT(pyramid.maxDrift(), harness::kStandingDriftMeters);
@@ -232,13 +226,7 @@ TEST(ConvergingPredictor, PitLayersThatCannotConvergeEndEarly)
 	converging.settings.m_diagnostics.m_convergingStep = true;
 	harness::Trial pit(converging, "dense_random");
 	pit.run(1.0);
-	const btShockPropagationConstraintSolver& solver = *pit.simulation().shockSolver();
-	long sweeps = 0;
-	for (int i = 0; i < 60; ++i)
-	{
-		pit.step();
-		sweeps += solver.getStatistics().m_numLayerSweeps;
-	}
+	const long sweeps = spec::sumOverSteps(pit, 60, &btShockPropagationStatistics::m_numLayerSweeps);
 	EXPECT_LT(double(sweeps) / 60.0, 850.0) << "layer sweeps per step";
 	EXPECT_FALSE(harness::anyNonFinite(pit.bodies()));
 }
