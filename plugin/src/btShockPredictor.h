@@ -99,6 +99,7 @@ private:
 		btScalar m_start;                     // impulse before the passes (N s)
 		btScalar m_total;                     // D_A + D_B + c of the row
 		btScalar m_layerDelta;                // composite rows: impulse change not yet applied to the free body
+		btScalar m_restTarget;                // impulse-scaled motion of a resting fixated side, hidden in its layer's visit (N s)
 		int m_free;                           // the free side's solver body, -1 if no side is fixated
 		int m_kind;
 		int m_fixed;  // 0: none, 1: A, 2: B
@@ -156,6 +157,7 @@ private:
 		c.m_upperLimit = bound;
 	}
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
+	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar convergedSpeed);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
 	bool supportFactor(int body, struct btCholesky6& factor) const;

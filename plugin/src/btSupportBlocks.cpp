@@ -78,7 +78,7 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 		const btVector3 arm = cr + offset.cross(n);
 		const btScalar fixedVelocity = sideVelocity(c, r.m_fixed == 1, bodies);
 		const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + cr.dot(comp->m_rootDw0) + arm.dot(comp->m_dw) : sideVelocity(c, r.m_fixed == 2, bodies);
-		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
+		const btScalar error = (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
 		if (!r.m_normal)
 		{
 			if (!(c.m_appliedImpulse > btScalar(0) || error > btScalar(0))) continue;

@@ -198,7 +198,7 @@ btScalar btShockPredictor::solveCompositeRow(Row& r, Composite& comp, btAlignedO
 	const btScalar cfm = c.m_cfm / c.m_jacDiagABInv;
 	const btScalar effective = n.length2() * comp.m_invMass + arm.dot(comp.m_invInertia * arm) + cfm;
 	if (!(effective > btScalar(0))) return 0;
-	btScalar delta = (r.m_total / effective) * (c.m_rhs - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv);
+	btScalar delta = (r.m_total / effective) * (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv);
 	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, c.m_appliedImpulse + delta));
 	delta = clamped - c.m_appliedImpulse;
 	c.m_appliedImpulse = clamped;
