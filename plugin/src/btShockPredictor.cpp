@@ -267,20 +267,23 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	return run;
 }
 
-void btShockPredictor::showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar convergedSpeed)
+void btShockPredictor::showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed)
 {
-	// A fixated dynamic support whose whole motion along a row is slower than the convergence
-	// speed is shown to the layer as at rest: that motion is within the tolerance its own layer
-	// was solved to, so it is that solve's error, not motion. Handed up, it grows: a box fitted
-	// to two supports whose rows move unequally turns, and the box above it turns further (the
-	// 2-D pyramids' first up-and-down cycle from rest left 3.3e-7, 2.3e-5 and 1.8e-4 m/s of row
-	// error at bases 40, 60 and 80 in float, and each later cycle handed it up again until base
-	// 60 moved at 0.08 s; docs/design.md 4u). Only the predictor's target changes: the impulses still act on both
-	// bodies, and the corrector's sweeps see every motion.
-	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
+	// A fixated dynamic support whose whole motion along a row is slower than restSpeed (the
+	// convergence speed) is shown to the layer as at rest: that motion is within the tolerance
+	// its own layer was solved to, so it is that solve's error, not motion. Handed up, it grows:
+	// a box fitted to two supports whose rows move unequally turns, and the box above it turns
+	// further (the 2-D pyramids' first up-and-down cycle from rest left 3.3e-7, 2.3e-5 and
+	// 1.8e-4 m/s of row error at bases 40, 60 and 80 in float, and each later cycle handed it up
+	// again until base 60 moved at 0.08 s; docs/design.md 4u). Only the predictor's target
+	// changes: the impulses still act on both bodies, and the corrector's sweeps see every
+	// motion. A restSpeed of 0 shows every motion.
+	const int begin = m_layerStart[layer], end = m_layerStart[layer + 1];
+	for (int i = begin; i < end; ++i) m_rows[i].m_restTarget = 0;
+	if (!(restSpeed > btScalar(0))) return;
+	for (int i = begin; i < end; ++i)
 	{
 		Row& r = m_rows[i];
-		r.m_restTarget = 0;
 		if (!r.m_fixed) continue;
 		const btSolverConstraint& c = *r.m_row;
 		const bool sideA = r.m_fixed == 1;
@@ -288,7 +291,7 @@ void btShockPredictor::showRestingSupports(int layer, btAlignedObjectArray<btSol
 		if (!(support.internalGetInvMass().length2() > btScalar(0))) continue;
 		const btScalar motion = (sideA ? c.m_contactNormal1 : c.m_contactNormal2).dot(wholeLinear(support)) +
 								(sideA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(wholeAngular(support));
-		if (btFabs(motion) < convergedSpeed) r.m_restTarget = motion * c.m_jacDiagABInv;
+		if (btFabs(motion) < restSpeed) r.m_restTarget = motion * c.m_jacDiagABInv;
 	}
 }
 

@@ -157,7 +157,7 @@ private:
 		c.m_upperLimit = bound;
 	}
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
-	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar convergedSpeed);
+	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
 	bool supportFactor(int body, struct btCholesky6& factor) const;
