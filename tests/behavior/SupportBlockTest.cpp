@@ -222,9 +222,7 @@ TEST(ConvergingPredictor, PitLayersThatCannotConvergeEndEarly)
 	// (the converging step: each cycle's longest layer visit, summed) is 637 a step, where
 	// sweeping each visit to its cap gave 1,108 (float). The towers, whose layers converge
 	// within a few sweeps, lose none (the truth suite under the converging step is unchanged).
-	harness::SolverSpec converging = spec::shock();
-	converging.settings.m_diagnostics.m_convergingStep = true;
-	harness::Trial pit(converging, "dense_random");
+	harness::Trial pit(spec::converging(), "dense_random");
 	pit.run(1.0);
 	const long sweeps = spec::sumOverSteps(pit, 60, &btShockPropagationStatistics::m_numLayerSweeps);
 	EXPECT_LT(double(sweeps) / 60.0, 850.0) << "layer sweeps per step";
@@ -240,9 +238,7 @@ TEST(ConvergingPredictor, PyramidOfBase80StandsWhereHandingUpItsSupportsErrorTur
 	// of base 80, and each later cycle handed it up again): the pyramid moved past 1 cm at
 	// 0.05 s. Shown as rest to the layer above, it stands (float and double), its ground carrying
 	// its weight, with no kinetic energy left.
-	harness::SolverSpec converging = spec::shock();
-	converging.settings.m_diagnostics.m_convergingStep = true;
-	harness::Trial pyramid(converging, "pyramid", {{"base", 80}});
+	harness::Trial pyramid(spec::converging(), "pyramid", {{"base", 80}});
 	pyramid.run(1.1);
 	EXPECT_LT(pyramid.maxDrift(), 0.001) << "m";
 	EXPECT_NEAR(pyramid.summary().groundOverWeightLastSecond, 1.0, 0.01);
