@@ -108,132 +108,155 @@ Verdict seesawCase(const harness::SolverSpec& spec)
 }
 
 // ---------------------------------------------------------------------------------------------------
+// Chaotic collapses (cases 2 and 3) are judged as ensembles. How a pile ends depends on the order in
+// which bodies meet, so one start decides little: across the 5 starts below, the converged stock
+// runs themselves scatter the ragdolls' mean head height from 0.13 to 0.36 m, and stock with 4 sub-steps
+// x 10 iterations sits below the more converged ones (ensemble means 0.16 against 0.18-0.24 m for
+// 4 x 50, 8 x 20, 8 x 50 and 16 x 50; docs/design.md, section 4u). Each case runs the same starts under
+// the solver and under the reference (SI 8 sub-steps x 20 iterations) and compares the means.
+
+harness::SolverSpec collapseReference() { return stockReference(8, 20); }
+
+/// Mean of `figure` over the starts, each start one override of the scene parameter `param`.
+struct Ensemble
+{
+	std::vector<double> figures;
+	double mean = 0;
+	double msPerStep = 0;
+	bool nonFinite = false;
+	std::string list() const
+	{
+		std::string text;
+		for (double f : figures) text += (text.empty() ? "" : " ") + format("%.3f", f);
+		return text;
+	}
+};
+
+template <class Run>
+Ensemble runEnsemble(const std::vector<double>& starts, Run run)
+{
+	Ensemble e;
+	for (double start : starts)
+	{
+		double msPerStep = 0;
+		bool nonFinite = false;
+		const double f = run(start, msPerStep, nonFinite);
+		e.figures.push_back(f);
+		e.mean += f / double(starts.size());
+		e.msPerStep += msPerStep / double(starts.size());
+		e.nonFinite = e.nonFinite || nonFinite || !std::isfinite(f);
+	}
+	return e;
+}
+
+// ---------------------------------------------------------------------------------------------------
 // 2. Passive ragdoll pile. benchmark/ragdoll_pile: 12 of BenchmarkDemo's ragdolls (2 x 2 columns, 3
-// high), each tilted 5 degrees, dropped onto each other. No muscles: they fold and fall. Figure: the
-// mean head height after kRagdollSeconds; reference: stock SI with 4 sub-steps (10 iterations).
+// high), each tilted about a horizontal axis, dropped onto each other. No muscles: they fold and fall.
+// Figure: the mean head height after kRagdollSeconds, averaged over starts tilted 3-7 degrees.
 
 constexpr double kRagdollSeconds = 5.0;
 constexpr double kRagdollRelative = 0.25;  // band: within 25% of the reference ...
 constexpr double kRagdollAbsolute = 0.10;  // ... or 0.1 m, whichever is wider
 constexpr double kRagdollStandingShare = 0.5;  // and below half a standing ragdoll's head height
-constexpr double kUprightHeadOverPelvis = 0.45;  // m: head this far above its pelvis = upright (standing: 0.6)
+const std::vector<double> kRagdollTilts = {3, 4, 5, 6, 7};  // deg, the ensemble's starts
 
-struct RagdollRun
+double standingHeadHeight()
 {
-	double meanHeadHeight = 0;  // m
-	double standingHeadHeight = 0;  // m
-	int upright = 0;
-	int ragdolls = 0;
-	double msPerStep = 0;
-	bool nonFinite = false;
-};
-
-RagdollRun runRagdolls(const harness::SolverSpec& spec)
-{
-	harness::Trial trial(spec, "ragdoll_pile");
-	RagdollRun run;
-	run.ragdolls = int(trial.scene().facts.at("ragdolls"));
-	run.standingHeadHeight = trial.scene().facts.at("standingHeadHeight");
-	const int frames = int(kRagdollSeconds * kFrameRate + 0.5);
-	for (int k = 0; k < frames; ++k)
-		trial.step();
-	for (int i = 0; i < run.ragdolls; ++i)
-	{
-		const double head = trial.scene().named("head" + std::to_string(i))->getCenterOfMassPosition().y();
-		const double pelvis = trial.scene().named("pelvis" + std::to_string(i))->getCenterOfMassPosition().y();
-		run.meanHeadHeight += head / run.ragdolls;
-		if (head - pelvis > kUprightHeadOverPelvis)
-			++run.upright;
-	}
-	const harness::TrialSummary summary = trial.summary();
-	run.msPerStep = summary.msPerStep;
-	run.nonFinite = summary.nonFinite;
-	return run;
+	harness::Trial trial(collapseReference(), "ragdoll_pile");
+	return trial.scene().facts.at("standingHeadHeight");
 }
 
-const RagdollRun& ragdollReference()
+Ensemble runRagdolls(const harness::SolverSpec& spec)
 {
-	static const RagdollRun reference = runRagdolls(stockReference(4, 10));
+	return runEnsemble(kRagdollTilts, [&](double tilt, double& msPerStep, bool& nonFinite) {
+		harness::Trial trial(spec, "ragdoll_pile", {{"tilt", tilt}});
+		const int ragdolls = int(trial.scene().facts.at("ragdolls"));
+		trial.run(kRagdollSeconds);
+		double mean = 0;
+		for (int i = 0; i < ragdolls; ++i) mean += trial.named("head" + std::to_string(i))->getCenterOfMassPosition().y() / ragdolls;
+		const harness::TrialSummary summary = trial.summary();
+		msPerStep = summary.msPerStep;
+		nonFinite = summary.nonFinite;
+		return mean;
+	});
+}
+
+const Ensemble& ragdollReference()
+{
+	static const Ensemble reference = runRagdolls(collapseReference());
 	return reference;
 }
 
 Verdict ragdollCase(const harness::SolverSpec& spec)
 {
-	const RagdollRun& ref = ragdollReference();
-	const RagdollRun run = runRagdolls(spec);
+	const Ensemble& ref = ragdollReference();
+	const Ensemble run = runRagdolls(spec);
 	Verdict v;
 	v.unit = "m";
-	v.figure = run.meanHeadHeight;
-	v.expected = ref.meanHeadHeight;
+	v.figure = run.mean;
+	v.expected = ref.mean;
 	v.msPerStep = run.msPerStep;
-	const double band = std::max(kRagdollRelative * ref.meanHeadHeight, kRagdollAbsolute);
-	const double ceiling = kRagdollStandingShare * run.standingHeadHeight;
-	v.pass = !run.nonFinite && std::isfinite(run.meanHeadHeight) && std::fabs(run.meanHeadHeight - ref.meanHeadHeight) <= band &&
-			 run.meanHeadHeight < ceiling;
-	v.detail = format("mean head height after %.0f s %.3f m, reference (SI 4 sub-steps) %.3f m +- %.3f m, must be < %.2f m (half standing); ",
-					  kRagdollSeconds, run.meanHeadHeight, ref.meanHeadHeight, band, ceiling) +
-			   std::to_string(run.upright) + " of " + std::to_string(run.ragdolls) + " upright (reference " + std::to_string(ref.upright) + ")";
+	const double band = std::max(kRagdollRelative * ref.mean, kRagdollAbsolute);
+	const double ceiling = kRagdollStandingShare * standingHeadHeight();
+	v.pass = !run.nonFinite && std::fabs(run.mean - ref.mean) <= band && run.mean < ceiling;
+	v.detail = format("mean head height after %.0f s, over 5 starts %.3f m, reference (SI 8 sub-steps x 20) %.3f m +- %.3f m, must be < %.2f m "
+					  "(half standing); ",
+					  kRagdollSeconds, run.mean, ref.mean, band, ceiling) +
+			   "per start " + run.list() + " (reference " + ref.list() + ")";
 	return v;
 }
 
 // ---------------------------------------------------------------------------------------------------
 // 3. Leaning staircase columns. benchmark/leaning_columns: BenchmarkDemo's "3000 boxes" layout, 2 x 2
-// columns of 12 boxes of edge 2 m, each layer 0.35 m further out along x and z, dropped from 1 m
-// gaps. The top 5 boxes of a column already overhang the box under them: every column topples.
-// Figure: mean box centre height after kColumnsSeconds; reference: stock SI with 4 sub-steps.
+// columns of 12 boxes of edge 2 m, each layer 0.35 m further out along x and z, dropped from gaps of
+// 0.8-1.2 m (the ensemble's starts; BenchmarkDemo: 1). The top 5 boxes of a column already overhang
+// the box under them: every column topples. Figure: mean box centre height after kColumnsSeconds.
 
 constexpr double kColumnsSeconds = 5.0;
 constexpr double kColumnsRelative = 0.25;  // band: within 25% of the reference ...
 constexpr double kColumnsAbsoluteEdges = 0.25;  // ... or a quarter box edge, whichever is wider
 constexpr double kColumnsCollapsedShare = 0.25;  // and below a quarter of the initial mean height
+const std::vector<double> kColumnsGaps = {0.8, 0.9, 1.0, 1.1, 1.2};  // m, the ensemble's starts
 
-struct ColumnsRun
+Ensemble runColumns(const harness::SolverSpec& spec)
 {
-	double meanHeight = 0;  // m
-	double initialMeanHeight = 0;  // m
-	double restingHeight = 0;  // m, centre of a box lying on the ground
-	double msPerStep = 0;
-	bool nonFinite = false;
-};
-
-ColumnsRun runColumns(const harness::SolverSpec& spec)
-{
-	harness::Trial trial(spec, "leaning_columns");
-	ColumnsRun run;
-	run.initialMeanHeight = trial.scene().facts.at("initialMeanHeight");
-	run.restingHeight = trial.scene().facts.at("restingHeight");
-	const int frames = int(kColumnsSeconds * kFrameRate + 0.5);
-	for (int k = 0; k < frames; ++k)
-		trial.step();
-	for (const btRigidBody* b : trial.bodies())
-		run.meanHeight += b->getCenterOfMassPosition().y() / double(trial.bodies().size());
-	const harness::TrialSummary summary = trial.summary();
-	run.msPerStep = summary.msPerStep;
-	run.nonFinite = summary.nonFinite;
-	return run;
+	return runEnsemble(kColumnsGaps, [&](double gap, double& msPerStep, bool& nonFinite) {
+		harness::Trial trial(spec, "leaning_columns", {{"gap", gap}});
+		trial.run(kColumnsSeconds);
+		double mean = 0;
+		for (const btRigidBody* b : trial.bodies()) mean += b->getCenterOfMassPosition().y() / double(trial.bodies().size());
+		const harness::TrialSummary summary = trial.summary();
+		msPerStep = summary.msPerStep;
+		nonFinite = summary.nonFinite;
+		return mean;
+	});
 }
 
-const ColumnsRun& columnsReference()
+const Ensemble& columnsReference()
 {
-	static const ColumnsRun reference = runColumns(stockReference(4, 10));
+	static const Ensemble reference = runColumns(collapseReference());
 	return reference;
 }
 
 Verdict columnsCase(const harness::SolverSpec& spec)
 {
-	const ColumnsRun& ref = columnsReference();
-	const ColumnsRun run = runColumns(spec);
+	const Ensemble& ref = columnsReference();
+	const Ensemble run = runColumns(spec);
+	harness::Trial start(spec, "leaning_columns", {{"gap", kColumnsGaps.front()}});
+	const double initialMeanHeight = start.scene().facts.at("initialMeanHeight");  // the lowest start's
+	const double restingHeight = start.scene().facts.at("restingHeight");
 	Verdict v;
 	v.unit = "m";
-	v.figure = run.meanHeight;
-	v.expected = ref.meanHeight;
+	v.figure = run.mean;
+	v.expected = ref.mean;
 	v.msPerStep = run.msPerStep;
-	const double band = std::max(kColumnsRelative * ref.meanHeight, kColumnsAbsoluteEdges * 2 * run.restingHeight);
-	const double ceiling = kColumnsCollapsedShare * run.initialMeanHeight;
-	v.pass = !run.nonFinite && std::isfinite(run.meanHeight) && std::fabs(run.meanHeight - ref.meanHeight) <= band && run.meanHeight < ceiling;
-	v.detail = format("mean box height after %.0f s %.2f m (start %.2f m, lying flat %.2f m); ", kColumnsSeconds, run.meanHeight,
-					  run.initialMeanHeight, run.restingHeight) +
-			   format("reference (SI 4 sub-steps) %.2f m +- %.2f m, must be < %.2f m", ref.meanHeight, band, ceiling);
+	const double band = std::max(kColumnsRelative * ref.mean, kColumnsAbsoluteEdges * 2 * restingHeight);
+	const double ceiling = kColumnsCollapsedShare * initialMeanHeight;
+	v.pass = !run.nonFinite && std::fabs(run.mean - ref.mean) <= band && run.mean < ceiling;
+	v.detail = format("mean box height after %.0f s, over 5 starts %.2f m (lowest start %.2f m, lying flat %.2f m); ", kColumnsSeconds, run.mean,
+					  initialMeanHeight, restingHeight) +
+			   format("reference (SI 8 sub-steps x 20) %.2f m +- %.2f m, must be < %.2f m; ", ref.mean, band, ceiling) + "per start " + run.list() +
+			   " (reference " + ref.list() + ")";
 	return v;
 }
 
@@ -352,12 +375,13 @@ void addDynamicsCases(std::vector<TruthCase>& cases)
 					 "a converged solver (SI 8 sub-steps x 50 iterations) takes",
 					 seesawCase});
 	cases.push_back({"RagdollPileCollapses", "dynamics",
-					 "passive ragdolls (no muscles) dropped in a pile fold and fall: mean head height after 5 s within 25% (or 0.1 m) of a converged "
-					 "solver's (SI 4 sub-steps) and below half a standing ragdoll's",
+					 "passive ragdolls (no muscles) dropped in a pile fold and fall: mean head height after 5 s, over 5 starts, within 25% (or "
+					 "0.1 m) of a converged solver's (SI 8 sub-steps x 20) over the same starts and below half a standing ragdoll's",
 					 ragdollCase});
 	cases.push_back({"LeaningColumnsTopple", "topple",
 					 "columns whose layers each lean 0.35 m further out (BenchmarkDemo's 3000 boxes) overhang their support and topple: mean box "
-					 "height after 5 s within 25% of a converged solver's (SI 4 sub-steps) and below a quarter of the start",
+					 "height after 5 s, over 5 starts, within 25% (or a quarter edge) of a converged solver's (SI 8 sub-steps x 20) over the same "
+					 "starts and below a quarter of the start",
 					 columnsCase});
 	cases.push_back({"LedgeColumnTipsAsOneBody", "topple",
 					 "6 aligned cubes on a ledge, their axis 0.2 edge past its edge, tip about it as one rigid body: after 0.2 s every cube turns "
