@@ -374,6 +374,31 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 	return run;
 }
 
+btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bodies) const
+{
+	btScalar worst = 0;
+	for (int i = 0; i < m_rows.size(); ++i)
+	{
+		const btSolverConstraint& c = *m_rows[i].m_row;
+		if (c.m_jacDiagABInv == btScalar(0)) continue;
+		const btSolverBody& a = bodies[c.m_solverBodyIdA];
+		const btSolverBody& b = bodies[c.m_solverBodyIdB];
+		const btScalar velocity = c.m_contactNormal1.dot(a.m_deltaLinearVelocity) + c.m_relpos1CrossNormal.dot(a.m_deltaAngularVelocity) +
+								  c.m_contactNormal2.dot(b.m_deltaLinearVelocity) + c.m_relpos2CrossNormal.dot(b.m_deltaAngularVelocity);
+		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - velocity;
+		btScalar lower = c.m_lowerLimit, upper = c.m_upperLimit;
+		if (m_rows[i].m_normal)
+		{
+			const btScalar bound = c.m_friction * btMax(btScalar(0), m_rows[i].m_normal->m_appliedImpulse);
+			lower = -bound;
+			upper = bound;
+		}
+		if (error > worst && c.m_appliedImpulse < upper) worst = error;
+		if (-error > worst && c.m_appliedImpulse > lower) worst = -error;
+	}
+	return worst;
+}
+
 void btShockPredictor::deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies)
 {
 	for (int i = m_layerStart[layer]; i < m_layerStart[layer + 1]; ++i)
@@ -392,8 +417,8 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 	for (int cycle = 0; cycle < btMax(1, cycles); ++cycle)
 	{
 		// A cycle after the first starts from the last one's velocities: each layer meets the
-		// final motion of the layers below it; once no layer needs more than one sweep, the
-		// passes have converged the coupled problem (every row holds, every impulse delivered).
+		// final motion of the layers below it. Cycles end once no layer needs more than one sweep
+		// or the coupled residual (header) is within the convergence speed.
 		int most = 0;
 		for (int k = 0; k < m_numLayers; ++k) most = btMax(most, sweepLayer(k, pools, sweeps, convergedSpeed, false));
 		if (weightFeeling) findWelds(pools);
@@ -403,7 +428,7 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 			deliver(k, pools.m_bodies);
 		}
 		run += most;
-		if (cycle > 0 && most <= 1) break;
+		if ((cycle > 0 && most <= 1) || residual(pools.m_bodies) <= convergedSpeed) break;
 	}
 	lineSearch(pools.m_bodies);
 	return run;

@@ -47,6 +47,16 @@ class btStackLayers;
 /// For a column this is the exact block elimination of the contact problem: the up pass gives
 /// each body its own weight, the down pass hands each body the reactions of those above.
 ///
+/// Cycles. Where the layers couple (a body on several supports, a pyramid), one up-and-down
+/// cycle leaves each layer fitted to supports that the layers below moved afterwards; the next
+/// cycle starts from the last one's velocities. Cycles end once the coupled residual, with every
+/// impulse delivered,
+///   r = max over rows of |(m_rhs - L m_cfm) / m_jacDiagABInv - (J_A v_A + J_B v_B)|,
+/// counting only rows whose impulse L could still move that way (below its upper bound for a
+/// positive error, above its lower bound for a negative one; a friction row's bounds are mu times
+/// its contact's impulse), is at most the convergence speed: then no PGS step of the coupled
+/// problem would change a velocity by more than a layer's own sweeps were allowed to leave.
+///
 /// Line search. Where fixation is wrong (a support that slides) the passes' change is not the
 /// coupled problem's answer, and taken whole it can add energy: on ice the up pass drags every
 /// body to the bottom one's velocity and the delivered reactions hand the bottom body (carried
@@ -165,6 +175,8 @@ private:
 	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
+	/// The coupled residual r of the cycles (m/s); every impulse must have been delivered.
+	btScalar residual(const btAlignedObjectArray<btSolverBody>& bodies) const;
 	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
 				const btAlignedObjectArray<int>& heightOfSolverBody);
 
