@@ -19,6 +19,7 @@ subject to the following restrictions:
 
 #include "btBodyChecks.h"
 #include "btPositionCorrection.h"
+#include "btShockPredictor.h"
 
 using namespace btShockPropagationChecks;
 
@@ -71,7 +72,10 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 	}
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
 	if (m_correction->getNumPoints() == 0) return false;
-	m_correction->solve(sweeps, layered ? &m_layers : 0);
+	// The converging step fixates a row's lower body only up to the predictor's limit on s
+	// (btShockPredictor::maxFixationScale); its positions follow the same rule.
+	const btScalar maxScale = m_settings.m_diagnostics.m_convergingStep ? btShockPredictor::maxFixationScale() : btScalar(BT_LARGE_FLOAT);
+	m_correction->solve(sweeps, layered ? &m_layers : 0, maxScale);
 	m_correction->apply();
 	return true;
 }

@@ -76,30 +76,34 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 		const btVector3 crossB = p.m_armB.cross(p.m_normal);
 		// Separation gained so far along the normal: n . (dx_A + dtheta_A x r_A - dx_B - dtheta_B x r_B).
 		btScalar gained = btScalar(0);
-		btScalar inverseMass = btScalar(0);
+		btScalar termA = btScalar(0), termB = btScalar(0);  // each side's inverse mass along the normal
 		btVector3 angularA(0, 0, 0), angularB(0, 0, 0);
-		const bool moveA = p.m_bodyA >= 0 && !m_fixated[p.m_bodyA];
-		const bool moveB = p.m_bodyB >= 0 && !m_fixated[p.m_bodyB];
 		if (p.m_bodyA >= 0)
 		{
 			const Body& a = m_bodies[p.m_bodyA];
 			gained += p.m_normal.dot(a.m_shift) + crossA.dot(a.m_turn);
-			if (moveA)
-			{
-				angularA = (a.m_invInertia * crossA) * a.m_angularFactor;
-				inverseMass += a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + crossA.dot(angularA);
-			}
+			angularA = (a.m_invInertia * crossA) * a.m_angularFactor;
+			termA = a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + crossA.dot(angularA);
 		}
 		if (p.m_bodyB >= 0)
 		{
 			const Body& b = m_bodies[p.m_bodyB];
 			gained -= p.m_normal.dot(b.m_shift) + crossB.dot(b.m_turn);
-			if (moveB)
-			{
-				angularB = (b.m_invInertia * crossB) * b.m_angularFactor;
-				inverseMass += b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + crossB.dot(angularB);
-			}
+			angularB = (b.m_invInertia * crossB) * b.m_angularFactor;
+			termB = b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + crossB.dot(angularB);
 		}
+		bool moveA = p.m_bodyA >= 0 && !m_fixated[p.m_bodyA];
+		bool moveB = p.m_bodyB >= 0 && !m_fixated[p.m_bodyB];
+		// A lower body is fixated only while s = (D_A + D_B) / D_free is at most m_maxScale; beyond,
+		// both bodies move, as the converging step's velocity rows do (btShockPredictor::addRow; a
+		// free side that nothing can move keeps the other fixated there too), so that the positions do not hold up a body whose velocity the contact does not stop.
+		if (moveA != moveB && p.m_bodyA >= 0 && p.m_bodyB >= 0)
+		{
+			const btScalar freeTerm = moveA ? termA : termB;
+			const btScalar total = termA + termB;
+			if (freeTerm > total * btScalar(1e-7) && freeTerm * m_maxScale < total) moveA = moveB = true;
+		}
+		const btScalar inverseMass = (moveA ? termA : btScalar(0)) + (moveB ? termB : btScalar(0));
 		if (!(inverseMass > SIMD_EPSILON)) continue;
 		btScalar delta = (p.m_target - gained) / inverseMass;
 		const btScalar sum = p.m_lambda + delta;
@@ -121,8 +125,9 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 	}
 }
 
-void btPositionCorrection::solve(int sweeps, const btStackLayers* layers)
+void btPositionCorrection::solve(int sweeps, const btStackLayers* layers, btScalar maxFixationScale)
 {
+	m_maxScale = maxFixationScale;
 	const int numLayers = layers ? m_numLayers : 1;
 	// Points by layer (counting sort; order within a layer kept).
 	m_layerStart.resize(numLayers + 1);

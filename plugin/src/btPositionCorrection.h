@@ -45,8 +45,10 @@ public:
 				  btScalar target, int layer);
 	int getNumPoints() const { return m_points.size(); }
 
-	/// Layered (layers given) or global (layers null) projection, that many sweeps per layer.
-	void solve(int sweeps, const btStackLayers* layers);
+	/// Layered (layers given) or global (layers null) projection, that many sweeps per layer. A
+	/// point whose lower body would be fixated moves both bodies where s = (D_A + D_B) / D_free
+	/// (D a side's inverse mass along the normal) exceeds maxFixationScale.
+	void solve(int sweeps, const btStackLayers* layers, btScalar maxFixationScale);
 	/// Move the bodies' transforms by their corrections (world and interpolation transform).
 	void apply();
 
@@ -77,6 +79,7 @@ private:
 	btAlignedObjectArray<int> m_cursor;
 	btAlignedObjectArray<char> m_fixated;
 	int m_numLayers = 1;
+	btScalar m_maxScale = BT_LARGE_FLOAT;
 };
 
 #endif  // BT_SHOCK_PROPAGATION_POSITION_CORRECTION_H

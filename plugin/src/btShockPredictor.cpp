@@ -20,7 +20,6 @@ subject to the following restrictions:
 
 namespace
 {
-const btScalar kMaxFixationScale = btScalar(1) / btSqrt(SIMD_EPSILON);  // largest s a row is fixated at (btGroundedFixation.cpp)
 // J W J^T of one side of a row, as Bullet applies impulses (btSolverBody::internalApplyImpulse).
 btScalar sideTerm(const btVector3& normal, const btVector3& crossNormal, const btVector3& angularComponent, const btSolverBody& body)
 {
@@ -62,7 +61,7 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 		// back, so the rounding of that cancellation grows with s. Up to 1 / sqrt(epsilon) (2.9e3
 		// in float, 6.7e7 in double) it stays below sqrt(epsilon) of the load; beyond, the row is
 		// solved with both bodies free, as Bullet does.
-		if (scale <= kMaxFixationScale)
+		if (scale <= maxFixationScale())
 		{
 			r.m_fixed = fixA ? 1 : 2;
 			r.m_free = fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA;

@@ -93,6 +93,13 @@ public:
 
 	int getNumLayers() const { return m_numLayers; }
 
+	/// Largest s at which a row's lower body is fixated, 1 / sqrt(epsilon) (2.9e3 in float, 6.7e7
+	/// in double): the fixated body's velocity carries s times the free one's change until its
+	/// own supports take it back, and the rounding of that cancellation grows with s. A row with
+	/// a larger s is solved with both bodies free, as Bullet does, in the velocity step and in the
+	/// position correction alike.
+	static btScalar maxFixationScale() { return btScalar(1) / btSqrt(SIMD_EPSILON); }
+
 private:
 	enum Kind
 	{
