@@ -96,7 +96,8 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 		bool moveB = p.m_bodyB >= 0 && !m_fixated[p.m_bodyB];
 		// A lower body is fixated only while s = (D_A + D_B) / D_free is at most m_maxScale; beyond,
 		// both bodies move, as the converging step's velocity rows do (btShockPredictor::addRow; a
-		// free side that nothing can move keeps the other fixated there too), so that the positions do not hold up a body whose velocity the contact does not stop.
+		// free side that nothing can move keeps the other fixated there too), so that the positions
+		// do not hold up a body whose velocity the contact does not stop.
 		if (moveA != moveB && p.m_bodyA >= 0 && p.m_bodyB >= 0)
 		{
 			const btScalar freeTerm = moveA ? termA : termB;
