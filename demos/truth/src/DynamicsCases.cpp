@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -117,13 +118,15 @@ Verdict seesawCase(const harness::SolverSpec& spec)
 
 harness::SolverSpec collapseReference() { return stockReference(8, 20); }
 
-/// Mean of `figure` over the starts, each start one override of the scene parameter `param`.
+/// A figure measured over the starts, each start one value of the scene parameter `param`; `facts`
+/// are the first start's scene facts.
 struct Ensemble
 {
 	std::vector<double> figures;
 	double mean = 0;
 	double msPerStep = 0;
 	bool nonFinite = false;
+	std::map<std::string, double> facts;
 	std::string list() const
 	{
 		std::string text;
@@ -132,19 +135,23 @@ struct Ensemble
 	}
 };
 
-template <class Run>
-Ensemble runEnsemble(const std::vector<double>& starts, Run run)
+/// Runs `scene` under `spec` for `seconds` once per start and takes figure(trial) at the end.
+template <class Figure>
+Ensemble runEnsemble(const harness::SolverSpec& spec, const char* scene, const char* param, const std::vector<double>& starts, double seconds,
+					 Figure figure)
 {
 	Ensemble e;
 	for (double start : starts)
 	{
-		double msPerStep = 0;
-		bool nonFinite = false;
-		const double f = run(start, msPerStep, nonFinite);
+		harness::Trial trial(spec, scene, {{param, start}});
+		if (e.figures.empty()) e.facts = trial.scene().facts;
+		trial.run(seconds);
+		const double f = figure(trial);
+		const harness::TrialSummary summary = trial.summary();
 		e.figures.push_back(f);
 		e.mean += f / double(starts.size());
-		e.msPerStep += msPerStep / double(starts.size());
-		e.nonFinite = e.nonFinite || nonFinite || !std::isfinite(f);
+		e.msPerStep += summary.msPerStep / double(starts.size());
+		e.nonFinite = e.nonFinite || summary.nonFinite || !std::isfinite(f);
 	}
 	return e;
 }
@@ -160,23 +167,12 @@ constexpr double kRagdollAbsolute = 0.10;  // ... or 0.1 m, whichever is wider
 constexpr double kRagdollStandingShare = 0.5;  // and below half a standing ragdoll's head height
 const std::vector<double> kRagdollTilts = {3, 4, 5, 6, 7};  // deg, the ensemble's starts
 
-double standingHeadHeight()
-{
-	harness::Trial trial(collapseReference(), "ragdoll_pile");
-	return trial.scene().facts.at("standingHeadHeight");
-}
-
 Ensemble runRagdolls(const harness::SolverSpec& spec)
 {
-	return runEnsemble(kRagdollTilts, [&](double tilt, double& msPerStep, bool& nonFinite) {
-		harness::Trial trial(spec, "ragdoll_pile", {{"tilt", tilt}});
+	return runEnsemble(spec, "ragdoll_pile", "tilt", kRagdollTilts, kRagdollSeconds, [](const harness::Trial& trial) {
 		const int ragdolls = int(trial.scene().facts.at("ragdolls"));
-		trial.run(kRagdollSeconds);
 		double mean = 0;
 		for (int i = 0; i < ragdolls; ++i) mean += trial.named("head" + std::to_string(i))->getCenterOfMassPosition().y() / ragdolls;
-		const harness::TrialSummary summary = trial.summary();
-		msPerStep = summary.msPerStep;
-		nonFinite = summary.nonFinite;
 		return mean;
 	});
 }
@@ -197,7 +193,7 @@ Verdict ragdollCase(const harness::SolverSpec& spec)
 	v.expected = ref.mean;
 	v.msPerStep = run.msPerStep;
 	const double band = std::max(kRagdollRelative * ref.mean, kRagdollAbsolute);
-	const double ceiling = kRagdollStandingShare * standingHeadHeight();
+	const double ceiling = kRagdollStandingShare * run.facts.at("standingHeadHeight");
 	v.pass = !run.nonFinite && std::fabs(run.mean - ref.mean) <= band && run.mean < ceiling;
 	v.detail = format("mean head height after %.0f s, over 5 starts %.3f m, reference (SI 8 sub-steps x 20) %.3f m +- %.3f m, must be < %.2f m "
 					  "(half standing); ",
@@ -220,14 +216,9 @@ const std::vector<double> kColumnsGaps = {0.8, 0.9, 1.0, 1.1, 1.2};  // m, the e
 
 Ensemble runColumns(const harness::SolverSpec& spec)
 {
-	return runEnsemble(kColumnsGaps, [&](double gap, double& msPerStep, bool& nonFinite) {
-		harness::Trial trial(spec, "leaning_columns", {{"gap", gap}});
-		trial.run(kColumnsSeconds);
+	return runEnsemble(spec, "leaning_columns", "gap", kColumnsGaps, kColumnsSeconds, [](const harness::Trial& trial) {
 		double mean = 0;
 		for (const btRigidBody* b : trial.bodies()) mean += b->getCenterOfMassPosition().y() / double(trial.bodies().size());
-		const harness::TrialSummary summary = trial.summary();
-		msPerStep = summary.msPerStep;
-		nonFinite = summary.nonFinite;
 		return mean;
 	});
 }
@@ -242,9 +233,8 @@ Verdict columnsCase(const harness::SolverSpec& spec)
 {
 	const Ensemble& ref = columnsReference();
 	const Ensemble run = runColumns(spec);
-	harness::Trial start(spec, "leaning_columns", {{"gap", kColumnsGaps.front()}});
-	const double initialMeanHeight = start.scene().facts.at("initialMeanHeight");  // the lowest start's
-	const double restingHeight = start.scene().facts.at("restingHeight");
+	const double initialMeanHeight = run.facts.at("initialMeanHeight");  // the first, lowest start's
+	const double restingHeight = run.facts.at("restingHeight");
 	Verdict v;
 	v.unit = "m";
 	v.figure = run.mean;
