@@ -385,13 +385,8 @@ btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bo
 		const btScalar velocity = c.m_contactNormal1.dot(a.m_deltaLinearVelocity) + c.m_relpos1CrossNormal.dot(a.m_deltaAngularVelocity) +
 								  c.m_contactNormal2.dot(b.m_deltaLinearVelocity) + c.m_relpos2CrossNormal.dot(b.m_deltaAngularVelocity);
 		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - velocity;
-		btScalar lower = c.m_lowerLimit, upper = c.m_upperLimit;
-		if (m_rows[i].m_normal)
-		{
-			const btScalar bound = c.m_friction * btMax(btScalar(0), m_rows[i].m_normal->m_appliedImpulse);
-			lower = -bound;
-			upper = bound;
-		}
+		btScalar lower, upper;
+		rowBounds(m_rows[i], lower, upper);
 		if (error > worst && c.m_appliedImpulse < upper) worst = error;
 		if (-error > worst && c.m_appliedImpulse > lower) worst = -error;
 	}

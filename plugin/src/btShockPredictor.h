@@ -53,8 +53,8 @@ class btStackLayers;
 /// impulse delivered,
 ///   r = max over rows of |(m_rhs - L m_cfm) / m_jacDiagABInv - (J_A v_A + J_B v_B)|,
 /// counting only rows whose impulse L could still move that way (below its upper bound for a
-/// positive error, above its lower bound for a negative one; a friction row's bounds are mu times
-/// its contact's impulse), is at most the convergence speed: then no PGS step of the coupled
+/// positive error, above its lower bound for a negative one; a friction or rolling row's bounds
+/// are those its sweep sets, rowBounds), is at most the convergence speed: then no PGS step of the coupled
 /// problem would change a velocity by more than a layer's own sweeps were allowed to leave.
 ///
 /// Line search. Where fixation is wrong (a support that slides) the passes' change is not the
@@ -164,15 +164,20 @@ private:
 	/// Friction and rolling rows: their bounds from their contact's impulse, as a stock sweep sets
 	/// them, and 0 once the contact stops pushing (Bullet's sweep skips such a row instead and
 	/// would leave its impulse in place). Other rows keep theirs.
-	static void boundByNormal(Row& r)
+	static void rowBounds(const Row& r, btScalar& lower, btScalar& upper)
 	{
-		if (!r.m_normal) return;
-		btSolverConstraint& c = *r.m_row;
+		const btSolverConstraint& c = *r.m_row;
+		if (!r.m_normal)
+		{
+			lower = c.m_lowerLimit;
+			upper = c.m_upperLimit;
+			return;
+		}
 		const btScalar normal = btMax(btScalar(0), r.m_normal->m_appliedImpulse);
-		const btScalar bound = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
-		c.m_lowerLimit = -bound;
-		c.m_upperLimit = bound;
+		upper = r.m_kind == FRICTION ? c.m_friction * normal : btMin(c.m_friction * normal, c.m_friction);
+		lower = -upper;
 	}
+	static void boundByNormal(Row& r) { rowBounds(r, r.m_row->m_lowerLimit, r.m_row->m_upperLimit); }
 	int sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
