@@ -306,6 +306,22 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 	const bool anyComposite = composites && m_composites.size() > 0;
 	if (!anyComposite) m_composites.resize(0);
 	solveBlocks(layer, pools);
+	// A row is swept while one of its bodies moved in the last sweep: a row whose bodies kept
+	// their velocities would not change. A sweep's change marks only the sides it may move (the
+	// free side; both sides of a row solved with both bodies free), so a fixated support that no
+	// row of the layer moves does not wake the other bodies it carries. A welded composite couples
+	// its members' rows, so a layer with composites sweeps all of them.
+	const bool perBody = !anyComposite;
+	m_movedAt.resize(bodies.size());
+	m_rowActive.resize(end - begin);
+	if (m_stamp > 0xffffffffu - unsigned(sweeps) - 2u)
+	{
+		// Before the stamps wrap (after about 4e9 sweeps), no body has moved.
+		for (int i = 0; i < m_movedAt.size(); ++i) m_movedAt[i] = 0;
+		m_stamp = 0;
+	}
+	++m_stamp;
+	for (int i = begin; i < end; ++i) m_movedAt[m_rows[i].m_row->m_solverBodyIdA] = m_movedAt[m_rows[i].m_row->m_solverBodyIdB] = m_stamp;
 	for (int s = 0; s < sweeps; ++s)
 	{
 		for (int i = 0; i < m_composites.size() && anyComposite; ++i)
@@ -313,12 +329,16 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 			m_composites[i].m_sweepDv = m_composites[i].m_dv;
 			m_composites[i].m_sweepDw = m_composites[i].m_dw;
 		}
+		const unsigned moved = m_stamp++;
 		// Converged once a whole sweep moves no row's bodies by more than convergedSpeed (m/s)
 		// along the row: a sweep whose row updates only shift load among a body's supports
 		// (statically indeterminate) changes no velocity and ends the layer.
 		for (int i = begin; i < end; ++i)
 		{
 			const btSolverConstraint& c = *m_rows[i].m_row;
+			const bool active = !perBody || m_movedAt[c.m_solverBodyIdA] == moved || m_movedAt[c.m_solverBodyIdB] == moved;
+			m_rowActive[i - begin] = active;
+			if (!active) continue;
 			m_sweepLinear[c.m_solverBodyIdA] = bodies[c.m_solverBodyIdA].internalGetDeltaLinearVelocity();
 			m_sweepAngular[c.m_solverBodyIdA] = bodies[c.m_solverBodyIdA].internalGetDeltaAngularVelocity();
 			m_sweepLinear[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaLinearVelocity();
@@ -326,6 +346,7 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 		}
 		for (int i = begin; i < end; ++i)
 		{
+			if (!m_rowActive[i - begin]) continue;
 			Row& r = m_rows[i];
 			if (anyComposite && r.m_free >= 0 && m_compositeOf[r.m_free] >= 0)
 				solveCompositeRow(r, m_composites[m_compositeOf[r.m_free]], bodies);
@@ -336,7 +357,9 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 		btScalar largest = anyComposite ? compositeMotion(layer, bodies) : btScalar(0);
 		for (int i = begin; i < end; ++i)
 		{
-			const btSolverConstraint& c = *m_rows[i].m_row;
+			if (!m_rowActive[i - begin]) continue;
+			const Row& r = m_rows[i];
+			const btSolverConstraint& c = *r.m_row;
 			btSolverBody& a = bodies[c.m_solverBodyIdA];
 			btSolverBody& b = bodies[c.m_solverBodyIdB];
 			const btScalar change = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity() - m_sweepLinear[c.m_solverBodyIdA]) +
@@ -344,6 +367,11 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 									c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity() - m_sweepLinear[c.m_solverBodyIdB]) +
 									c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity() - m_sweepAngular[c.m_solverBodyIdB]);
 			largest = btMax(largest, btFabs(change));
+			if (btFabs(change) > convergedSpeed)
+			{
+				if (r.m_fixed != 1) m_movedAt[c.m_solverBodyIdA] = m_stamp;
+				if (r.m_fixed != 2) m_movedAt[c.m_solverBodyIdB] = m_stamp;
+			}
 		}
 		if (!(largest > convergedSpeed)) break;
 		// A layer that cannot reach the convergence speed within its sweeps ends now. Each time

@@ -44,6 +44,9 @@ class btStackLayers;
 ///              delivered to them from above), then deliver its withheld impulses to the bodies
 ///              below; without weight feeling every withheld impulse is delivered after the up
 ///              pass (the classic method, which then leaves the rest to the corrector).
+/// Within a layer's sweeps a row is swept again only while one of its bodies moved in the last
+/// sweep (a change beyond the convergence speed), so a converged body costs nothing while its
+/// neighbours still move.
 /// For a column this is the exact block elimination of the contact problem: the up pass gives
 /// each body its own weight, the down pass hands each body the reactions of those above.
 ///
@@ -200,6 +203,9 @@ private:
 	btAlignedObjectArray<btScalar> m_slope, m_curvature, m_alpha;  // line search, per component
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
 	btAlignedObjectArray<btVector3> m_sweepLinear, m_sweepAngular;  // per solver body, before the current sweep
+	btAlignedObjectArray<unsigned> m_movedAt;  // per solver body: the last sweep (m_stamp) whose change moved it
+	btAlignedObjectArray<char> m_rowActive;    // per row of the layer being swept: swept in the current sweep
+	unsigned m_stamp = 0;
 	btAlignedObjectArray<btScalar> m_sweepChange;  // per sweep of the current layer: its largest row velocity change (m/s)
 	btAlignedObjectArray<Row> m_rows;        // by layer
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
