@@ -14,6 +14,8 @@ subject to the following restrictions:
 
 #include "btPositionCorrection.h"
 
+#include "btShockPredictor.h"
+
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 #include "BulletShockPropagation/btStackLayers.h"
 #include "LinearMath/btTransformUtil.h"
@@ -98,12 +100,8 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 		// both bodies move, as the converging step's velocity rows do (btShockPredictor::addRow; a
 		// free side that nothing can move keeps the other fixated there too), so that the positions
 		// do not hold up a body whose velocity the contact does not stop.
-		if (moveA != moveB && p.m_bodyA >= 0 && p.m_bodyB >= 0)
-		{
-			const btScalar freeTerm = moveA ? termA : termB;
-			const btScalar total = termA + termB;
-			if (freeTerm > total * btScalar(1e-7) && freeTerm * m_maxScale < total) moveA = moveB = true;
-		}
+		if (moveA != moveB && p.m_bodyA >= 0 && p.m_bodyB >= 0 && btShockPredictor::fixationScale(moveA ? termA : termB, termA + termB) > m_maxScale)
+			moveA = moveB = true;
 		const btScalar inverseMass = (moveA ? termA : btScalar(0)) + (moveB ? termB : btScalar(0));
 		if (!(inverseMass > SIMD_EPSILON)) continue;
 		btScalar delta = (p.m_target - gained) / inverseMass;

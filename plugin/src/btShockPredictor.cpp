@@ -54,8 +54,7 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 		const btScalar cfm = c.m_cfm / c.m_jacDiagABInv;
 		const btScalar freeTerm = (fixA ? dB : dA) + cfm;
 		const btScalar total = dA + dB + cfm;
-		// A free side that no impulse can move (a zero-mass axis): the row has nothing to solve.
-		const btScalar scale = freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0);
+		const btScalar scale = fixationScale(freeTerm, total);
 		// s is the free body's mass over the fixated one's along the row, plus one: the fixated
 		// body's velocity carries s times the free one's change until its own supports take it
 		// back, so the rounding of that cancellation grows with s. Up to 1 / sqrt(epsilon) (2.9e3

@@ -102,6 +102,10 @@ public:
 	/// a larger s is solved with both bodies free, as Bullet does, in the velocity step and in the
 	/// position correction alike.
 	static btScalar maxFixationScale() { return btScalar(1) / btSqrt(SIMD_EPSILON); }
+	/// s = total / freeTerm of a row whose lower side would be fixated (total = D_A + D_B + c,
+	/// freeTerm = D_free + c), or 0 where no impulse can move the free side (a zero-mass axis:
+	/// the row has nothing to solve). The side is fixated where s <= maxFixationScale().
+	static btScalar fixationScale(btScalar freeTerm, btScalar total) { return freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0); }
 
 private:
 	enum Kind
