@@ -302,6 +302,10 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
 	m_sweepLinear.resize(bodies.size());
 	m_sweepAngular.resize(bodies.size());
+	m_sweepDiffLinear.resize(bodies.size());
+	m_sweepDiffAngular.resize(bodies.size());
+	m_snapAt.resize(bodies.size());
+	m_diffAt.resize(bodies.size());
 	const bool anyComposite = composites && m_composites.size() > 0;
 	if (!anyComposite) m_composites.resize(0);
 	solveBlocks(layer, pools);
@@ -315,8 +319,8 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 	m_rowActive.resize(end - begin);
 	if (m_stamp > 0xffffffffu - unsigned(sweeps) - 2u)
 	{
-		// Before the stamps wrap (after about 4e9 sweeps), no body has moved.
-		for (int i = 0; i < m_movedAt.size(); ++i) m_movedAt[i] = 0;
+		// Before the stamps wrap (after about 4e9 sweeps), no body has moved or been recorded.
+		for (int i = 0; i < m_movedAt.size(); ++i) m_movedAt[i] = m_snapAt[i] = m_diffAt[i] = 0;
 		m_stamp = 0;
 	}
 	++m_stamp;
@@ -338,10 +342,15 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 			const bool active = !perBody || m_movedAt[c.m_solverBodyIdA] == moved || m_movedAt[c.m_solverBodyIdB] == moved;
 			m_rowActive[i - begin] = active;
 			if (!active) continue;
-			m_sweepLinear[c.m_solverBodyIdA] = bodies[c.m_solverBodyIdA].internalGetDeltaLinearVelocity();
-			m_sweepAngular[c.m_solverBodyIdA] = bodies[c.m_solverBodyIdA].internalGetDeltaAngularVelocity();
-			m_sweepLinear[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaLinearVelocity();
-			m_sweepAngular[c.m_solverBodyIdB] = bodies[c.m_solverBodyIdB].internalGetDeltaAngularVelocity();
+			// Each body's velocity as the sweep begins, recorded once (the sweep's stamp).
+			const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
+			for (int e = 0; e < 2; ++e)
+			{
+				if (m_snapAt[ends[e]] == moved) continue;
+				m_snapAt[ends[e]] = moved;
+				m_sweepLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity();
+				m_sweepAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity();
+			}
 		}
 		for (int i = begin; i < end; ++i)
 		{
@@ -359,12 +368,17 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 			if (!m_rowActive[i - begin]) continue;
 			const Row& r = m_rows[i];
 			const btSolverConstraint& c = *r.m_row;
-			btSolverBody& a = bodies[c.m_solverBodyIdA];
-			btSolverBody& b = bodies[c.m_solverBodyIdB];
-			const btScalar change = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity() - m_sweepLinear[c.m_solverBodyIdA]) +
-									c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity() - m_sweepAngular[c.m_solverBodyIdA]) +
-									c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity() - m_sweepLinear[c.m_solverBodyIdB]) +
-									c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity() - m_sweepAngular[c.m_solverBodyIdB]);
+			// Each body's velocity change over the sweep, formed once.
+			const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
+			for (int e = 0; e < 2; ++e)
+			{
+				if (m_diffAt[ends[e]] == moved) continue;
+				m_diffAt[ends[e]] = moved;
+				m_sweepDiffLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity() - m_sweepLinear[ends[e]];
+				m_sweepDiffAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity() - m_sweepAngular[ends[e]];
+			}
+			const btScalar change = c.m_contactNormal1.dot(m_sweepDiffLinear[ends[0]]) + c.m_relpos1CrossNormal.dot(m_sweepDiffAngular[ends[0]]) +
+									c.m_contactNormal2.dot(m_sweepDiffLinear[ends[1]]) + c.m_relpos2CrossNormal.dot(m_sweepDiffAngular[ends[1]]);
 			largest = btMax(largest, btFabs(change));
 			if (btFabs(change) > convergedSpeed)
 			{

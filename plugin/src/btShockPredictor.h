@@ -207,6 +207,8 @@ private:
 	btAlignedObjectArray<btScalar> m_slope, m_curvature, m_alpha;  // line search, per component
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
 	btAlignedObjectArray<btVector3> m_sweepLinear, m_sweepAngular;  // per solver body, before the current sweep
+	btAlignedObjectArray<btVector3> m_sweepDiffLinear, m_sweepDiffAngular;  // per solver body, its change over the sweep
+	btAlignedObjectArray<unsigned> m_snapAt, m_diffAt;  // per solver body: the sweep (m_stamp) whose start, change it holds
 	btAlignedObjectArray<unsigned> m_movedAt;  // per solver body: the last sweep (m_stamp) whose change moved it
 	btAlignedObjectArray<char> m_rowActive;    // per row of the layer being swept: swept in the current sweep
 	unsigned m_stamp = 0;
