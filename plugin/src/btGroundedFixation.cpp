@@ -238,8 +238,7 @@ bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBod
 		const btSolverConstraint& c = *m_rows[m_supportRows[k]].m_row;
 		btSolverBody& a = bodies[c.m_solverBodyIdA];
 		btSolverBody& b = bodies[c.m_solverBodyIdB];
-		const btScalar v = c.m_contactNormal1.dot(wholeLinear(a)) + c.m_relpos1CrossNormal.dot(wholeAngular(a)) +
-						   c.m_contactNormal2.dot(wholeLinear(b)) + c.m_relpos2CrossNormal.dot(wholeAngular(b));
+		const btScalar v = rowVelocity(c, wholeLinear(a), wholeAngular(a), wholeLinear(b), wholeAngular(b));
 		if (btFabs(v) > speed) return false;
 	}
 	return true;

@@ -230,12 +230,10 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 	btSolverConstraint& c = *r.m_row;
 	boundByNormal(r);
 	if (r.m_scale == btScalar(0)) return 0;
-	// Summed term by term, A then B, as Bullet's kernel does (sideVelocity(A) + sideVelocity(B)
-	// rounds differently, and the pushed stack's truth turns on that rounding; design.md 4u).
 	btSolverBody& a = bodies[c.m_solverBodyIdA];
 	btSolverBody& b = bodies[c.m_solverBodyIdB];
-	const btScalar velocity = c.m_contactNormal1.dot(a.internalGetDeltaLinearVelocity()) + c.m_relpos1CrossNormal.dot(a.internalGetDeltaAngularVelocity()) +
-							  c.m_contactNormal2.dot(b.internalGetDeltaLinearVelocity()) + c.m_relpos2CrossNormal.dot(b.internalGetDeltaAngularVelocity());
+	const btScalar velocity = rowVelocity(c, a.internalGetDeltaLinearVelocity(), a.internalGetDeltaAngularVelocity(), b.internalGetDeltaLinearVelocity(),
+										  b.internalGetDeltaAngularVelocity());
 	btScalar delta = r.m_scale * (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv);
 	const btScalar sum = c.m_appliedImpulse + delta;
 	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, sum));
@@ -377,8 +375,7 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 				m_sweepDiffLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity() - m_sweepLinear[ends[e]];
 				m_sweepDiffAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity() - m_sweepAngular[ends[e]];
 			}
-			const btScalar change = c.m_contactNormal1.dot(m_sweepDiffLinear[ends[0]]) + c.m_relpos1CrossNormal.dot(m_sweepDiffAngular[ends[0]]) +
-									c.m_contactNormal2.dot(m_sweepDiffLinear[ends[1]]) + c.m_relpos2CrossNormal.dot(m_sweepDiffAngular[ends[1]]);
+			const btScalar change = rowVelocity(c, m_sweepDiffLinear[ends[0]], m_sweepDiffAngular[ends[0]], m_sweepDiffLinear[ends[1]], m_sweepDiffAngular[ends[1]]);
 			largest = btMax(largest, btFabs(change));
 			if (btFabs(change) > convergedSpeed)
 			{
@@ -423,8 +420,7 @@ btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bo
 		if (c.m_jacDiagABInv == btScalar(0)) continue;
 		const btSolverBody& a = bodies[c.m_solverBodyIdA];
 		const btSolverBody& b = bodies[c.m_solverBodyIdB];
-		const btScalar velocity = c.m_contactNormal1.dot(a.m_deltaLinearVelocity) + c.m_relpos1CrossNormal.dot(a.m_deltaAngularVelocity) +
-								  c.m_contactNormal2.dot(b.m_deltaLinearVelocity) + c.m_relpos2CrossNormal.dot(b.m_deltaAngularVelocity);
+		const btScalar velocity = rowVelocity(c, a.m_deltaLinearVelocity, a.m_deltaAngularVelocity, b.m_deltaLinearVelocity, b.m_deltaAngularVelocity);
 		const btScalar error = (c.m_rhs - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - velocity;
 		btScalar lower, upper;
 		rowBounds(m_rows[i], lower, upper);

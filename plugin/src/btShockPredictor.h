@@ -144,6 +144,14 @@ private:
 		return (sideA ? c.m_contactNormal1 : c.m_contactNormal2).dot(body.internalGetDeltaLinearVelocity()) +
 			   (sideA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(body.internalGetDeltaAngularVelocity());
 	}
+	/// J_A (vA, wA) + J_B (vB, wB): a row's velocity from its bodies' linear and angular
+	/// velocities (whole, delta or a change), summed term by term, A then B, as Bullet's kernel
+	/// does (sideVelocity(A) + sideVelocity(B) rounds differently, and the pushed stack's truth
+	/// turns on that rounding; docs/design.md 4u).
+	static btScalar rowVelocity(const btSolverConstraint& c, const btVector3& vA, const btVector3& wA, const btVector3& vB, const btVector3& wB)
+	{
+		return c.m_contactNormal1.dot(vA) + c.m_relpos1CrossNormal.dot(wA) + c.m_contactNormal2.dot(vB) + c.m_relpos2CrossNormal.dot(wB);
+	}
 	/// A body's whole velocity (Bullet keeps it as the step's start, the external impulse and the
 	/// solver's delta).
 	static btVector3 wholeLinear(btSolverBody& body)
