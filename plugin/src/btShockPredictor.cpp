@@ -445,11 +445,16 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 {
 	int run = 0;
 	recordStart(pools.m_bodies);
-	for (int cycle = 0; cycle < btMax(1, cycles); ++cycle)
+	// The classic order delivers each cycle's reactions after its up pass and meets them only in
+	// the next cycle: a load reaches the ground one layer per cycle and the ground's answer the
+	// top one layer per cycle, so it may take 2 K cycles (header, "Cycles").
+	const int cycleCount = weightFeeling ? btMax(1, cycles) : btMax(btMax(1, cycles), 2 * m_numLayers);
+	for (int cycle = 0; cycle < cycleCount; ++cycle)
 	{
 		// A cycle after the first starts from the last one's velocities: each layer meets the
-		// final motion of the layers below it. Cycles end once no layer needs more than one sweep
-		// or the coupled residual (header) is within the convergence speed.
+		// final motion of the layers below it. Cycles end once the coupled residual (header) is
+		// within the convergence speed, or, with weight feeling, once no layer needs more than
+		// one sweep (its down pass has then met every delivered reaction).
 		int most = 0;
 		for (int k = 0; k < m_numLayers; ++k) most = btMax(most, sweepLayer(k, pools, sweeps, convergedSpeed, false));
 		if (weightFeeling) findWelds(pools);
@@ -459,7 +464,7 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 			deliver(k, pools.m_bodies);
 		}
 		run += most;
-		if ((cycle > 0 && most <= 1) || residual(pools.m_bodies) <= convergedSpeed) break;
+		if ((weightFeeling && cycle > 0 && most <= 1) || residual(pools.m_bodies) <= convergedSpeed) break;
 	}
 	lineSearch(pools.m_bodies);
 	return run;

@@ -59,6 +59,12 @@ class btStackLayers;
 /// positive error, above its lower bound for a negative one; a friction or rolling row's bounds
 /// are those its sweep sets, rowBounds), is at most the convergence speed: then no PGS step of the coupled
 /// problem would change a velocity by more than a layer's own sweeps were allowed to leave.
+/// With weight feeling they also end once no layer needs a second sweep: its down pass has met
+/// every reaction delivered. The classic order (no down pass) delivers each cycle's reactions
+/// after its up pass and meets them only in the next cycle, so a cycle of one-sweep layers says
+/// nothing there; a load reaches the ground one layer per cycle and the ground's answer the top
+/// one layer per cycle, so the classic order runs up to max(cycles, 2 K) cycles, ended by the
+/// residual alone (K layers).
 ///
 /// Line search. Where fixation is wrong (a support that slides) the passes' change is not the
 /// coupled problem's answer, and taken whole it can add energy: on ice the up pass drags every
