@@ -20,6 +20,8 @@ subject to the following restrictions:
 //                      Baumgarte term, no split impulse: the position correction's job; two
 //                      friction rows per point), every row from zero impulse, each contact row
 //                      given its layer;
+//                      (a contact row past the fixation limit starts from its point's last
+//                      impulse, as a stock step starts it: predictVelocities);
 //   predictVelocities  shock propagation (btShockPredictor): up-and-down cycles of a fixated up pass
 //                      and a weight-feeling down pass (support blocks; a body its supports do not
 //                      hold carries what is welded to it), every withheld impulse delivered, then
@@ -107,6 +109,9 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 		}
 	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody, m_componentOfSolverBody,
 					   m_layers.getNumComponents());
+	// A row past the fixation limit is Bullet's own, both bodies free, and starts as a stock step
+	// starts it: from its point's last impulse (docs/design.md, section 4u).
+	if (info.m_solverMode & SOLVER_USE_WARMSTARTING) m_predictor->warmStartPastLimit(pools, info.m_warmstartingFactor);
 	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;
 	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling, m_settings.m_diagnostics.m_predictorCycles);

@@ -41,6 +41,7 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 	r.m_layerDelta = 0;
 	r.m_restTarget = 0;
 	r.m_free = -1;
+	r.m_pastLimit = false;
 	const int hA = heightOfSolverBody[c.m_solverBodyIdA];
 	const int hB = heightOfSolverBody[c.m_solverBodyIdB];
 	// A side is fixated in layer k if it is not above the layer (height <= k); a component
@@ -67,6 +68,8 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 			r.m_total = total;
 			r.m_scale = scale;
 		}
+		else
+			r.m_pastLimit = true;
 	}
 	m_rows[m_cursor[layer * 3 + kind]++] = r;
 }
@@ -119,6 +122,23 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 	bucketSupportRows(pools.m_bodies.size());
 	groundRows(pools.m_bodies, heightOfSolverBody);
 	bucketSupportRows(pools.m_bodies.size());
+}
+
+void btShockPredictor::warmStartPastLimit(const Pools& pools, btScalar factor)
+{
+	for (int i = 0; i < m_rows.size(); ++i)
+	{
+		Row& r = m_rows[i];
+		if (!r.m_pastLimit || r.m_kind != CONTACT || r.m_fixed) continue;
+		btSolverConstraint& c = *r.m_row;
+		const btManifoldPoint* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
+		if (!point) continue;
+		const btScalar impulse = point->m_appliedImpulse * factor;
+		if (!(impulse > btScalar(0))) continue;
+		c.m_appliedImpulse = impulse;
+		applyToSide(c, true, impulse, pools.m_bodies);
+		applyToSide(c, false, impulse, pools.m_bodies);
+	}
 }
 
 void btShockPredictor::bucketSupportRows(int numBodies)

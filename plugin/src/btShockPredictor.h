@@ -102,6 +102,13 @@ public:
 
 	int getNumLayers() const { return m_numLayers; }
 
+	/// Start each contact row past the fixation limit (maxFixationScale; solved with both bodies
+	/// free, as Bullet solves it) from its point's last impulse times factor, applied to both
+	/// bodies, as a stock step starts it: from zero a few sweeps cannot carry a heavy body through
+	/// a light one (609 t on 83 g: its velocity fell as g t while the position correction held it
+	/// up, docs/design.md 4u); the warm start carries the load from step to step.
+	void warmStartPastLimit(const Pools& pools, btScalar factor);
+
 	/// Largest s at which a row's lower body is fixated, 1 / sqrt(epsilon) (2.9e3 in float, 6.7e7
 	/// in double): the fixated body's velocity carries s times the free one's change until its
 	/// own supports take it back, and the rounding of that cancellation grows with s. A row with
@@ -131,6 +138,7 @@ private:
 		btScalar m_layerDelta;                // composite rows: impulse change not yet applied to the free body
 		btScalar m_restTarget;                // impulse-scaled motion of a resting fixated side, hidden in its layer's visit (N s)
 		int m_free;                           // the free side's solver body, -1 if no side is fixated
+		bool m_pastLimit;                     // a one-sided row whose s exceeds maxFixationScale, solved both free
 		int m_kind;
 		int m_fixed;  // 0: none, 1: A, 2: B
 	};
