@@ -285,11 +285,13 @@ struct btShockPropagationDiagnostics
 
 	/// Opt-in, work in progress (the converging-solver issue; docs/design.md, section 4u): solve
 	/// stacked groups with the converging step instead of the layered passes: Bullet's setup with
-	/// friction warm-started, the shock-propagation predictor (btShockPredictor: fixated up pass,
-	/// weight-feeling down pass, every withheld impulse delivered, a kinetic-energy line search),
-	/// Bullet's own sweeps as the corrector (ceil(f N), ended once converged), Bullet's finish,
-	/// the layered position correction. Momentum is conserved by construction; it holds 23 of
-	/// the 26 truths, not the round tower the default step holds, so it is off.
+	/// every row from zero (a row past the fixation limit warm, as stock starts it), the
+	/// shock-propagation predictor (btShockPredictor: fixated up pass, weight-feeling down pass,
+	/// every withheld impulse delivered, a kinetic-energy line search), Bullet's own sweeps as the
+	/// corrector (ceil(f N), ended once converged), Bullet's finish, the layered position
+	/// correction. Momentum is conserved by construction and it holds the 26 truths, but in piles
+	/// it costs several times the default step (the pit of 100 cubes about 20x stock), so it is
+	/// off.
 	bool m_convergingStep = false;
 
 	/// The converging step's predictor: a layer ends once a sweep moves no row's bodies by more
