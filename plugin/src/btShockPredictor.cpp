@@ -129,7 +129,7 @@ void btShockPredictor::warmStartPastLimit(const Pools& pools, btScalar factor)
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
 		Row& r = m_rows[i];
-		if (!r.m_pastLimit || r.m_kind != CONTACT || r.m_fixed) continue;
+		if (!r.m_pastLimit || r.m_kind != CONTACT) continue;
 		btSolverConstraint& c = *r.m_row;
 		const btManifoldPoint* point = static_cast<const btManifoldPoint*>(c.m_originalContactPoint);
 		if (!point) continue;

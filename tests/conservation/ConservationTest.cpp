@@ -262,6 +262,40 @@ TEST(Conservation, HeavyTopColumnOnIceKeepsItsMomentum)
 	}
 }
 
+/// Stock, world and solver-only runs of one column on the floor for 2 s (masses bottom first):
+/// the largest kinetic energy beyond the potential energy released so far, the energy released
+/// at the end, and whether the kinetic energy stayed finite, printed under label.
+struct EnergyExcess
+{
+	const char* names[3] = {"stock", "world", "solver"};
+	btScalar excess[3] = {0, 0, 0};    // largest (kinetic - released potential) over the run (J)
+	btScalar released[3] = {0, 0, 0};  // potential energy released at the end (J)
+	bool finite[3] = {true, true, true};
+};
+
+EnergyExcess measureEnergyExcess(const std::vector<btScalar>& masses, const char* label)
+{
+	EnergyExcess e;
+	const Mode modes[] = {Mode::Stock, Mode::World, Mode::Solver};
+	for (int m = 0; m < 3; ++m)
+	{
+		Column column(modes[m], masses, 0, 0, btScalar(0.5), 0);
+		const btScalar potential0 = column.potentialEnergy();
+		for (int s = 0; s < 120; ++s)
+		{
+			column.world->stepSimulation(kDt, 0, kDt);
+			const btScalar give = potential0 - column.potentialEnergy();
+			e.excess[m] = btMax(e.excess[m], column.kineticEnergy() - btMax(btScalar(0), give));
+			e.released[m] = give;
+			e.finite[m] = e.finite[m] && std::isfinite(double(column.kineticEnergy()));
+		}
+	}
+	std::printf("CONSERVATION | %s | kinetic minus released potential, largest over 2 s:", label);
+	for (int m = 0; m < 3; ++m) std::printf(" %s %.3g J (released %.3g J)", e.names[m], double(e.excess[m]), double(e.released[m]));
+	std::printf("\n");
+	return e;
+}
+
 // A 1e5 kg box on a 1 kg box on the floor: the row between them has s = 1e5 + 1, beyond the
 // predictor's fixation limit in float (1 / sqrt(epsilon) = 2.9e3; btShockPredictor.h), so the
 // converging step solves it with both bodies free, as Bullet does, and in float the heavy box sinks
@@ -272,29 +306,11 @@ TEST(Conservation, HeavyTopColumnOnIceKeepsItsMomentum)
 // 8.2e3 J of kinetic energy with the column at rest in position (docs/design.md, section 4u).
 TEST(Conservation, AHeavyBoxOnALightOneGainsNoEnergyBeyondWhatItsFallReleases)
 {
-	const char* names[] = {"stock", "world", "solver"};
-	const Mode modes[] = {Mode::Stock, Mode::World, Mode::Solver};
-	btScalar excess[3] = {0, 0, 0};  // largest (kinetic - released potential) over the run (J)
-	btScalar released[3] = {0, 0, 0};
-	for (int m = 0; m < 3; ++m)
-	{
-		Column column(modes[m], 2, btScalar(1e5), btScalar(0.5), 0);
-		const btScalar potential0 = column.potentialEnergy();
-		for (int s = 0; s < 120; ++s)
-		{
-			column.world->stepSimulation(kDt, 0, kDt);
-			const btScalar give = potential0 - column.potentialEnergy();
-			excess[m] = btMax(excess[m], column.kineticEnergy() - btMax(btScalar(0), give));
-			released[m] = give;
-		}
-	}
-	std::printf("CONSERVATION | 1e5:1 pair | kinetic minus released potential, largest over 2 s:");
-	for (int m = 0; m < 3; ++m) std::printf(" %s %.3g J (released %.3g J)", names[m], double(excess[m]), double(released[m]));
-	std::printf("\n");
+	const EnergyExcess e = measureEnergyExcess({btScalar(1), btScalar(1e5)}, "1e5:1 pair");
 	// Round-off: 1e-6 of the heavy box's weight over the 2 s fall of one box height.
 	const btScalar bound = btScalar(1e-6) * btScalar(1e5) * kG * btScalar(0.5) + btScalar(1e-3);
-	EXPECT_LE(excess[1], bound) << names[1];
-	EXPECT_LE(excess[2], bound) << names[2];
+	EXPECT_LE(e.excess[1], bound) << e.names[1];
+	EXPECT_LE(e.excess[2], bound) << e.names[2];
 }
 
 // Hostile world seed 87 without poison, as a column: 0.147 kg, 3,849 kg, 1.01 kg, 83 g and 609 t
@@ -308,28 +324,10 @@ TEST(Conservation, AHeavyBoxOnALightOneGainsNoEnergyBeyondWhatItsFallReleases)
 TEST(Conservation, AColumnWithRowsPastTheFixationLimitGainsNoEnergy)
 {
 	const std::vector<btScalar> masses = {btScalar(0.147), btScalar(3849), btScalar(1.01), btScalar(0.083), btScalar(6.09e5)};
-	const char* names[] = {"stock", "world", "solver"};
-	const Mode modes[] = {Mode::Stock, Mode::World, Mode::Solver};
-	btScalar excess[3] = {0, 0, 0};  // largest (kinetic - released potential) over the run (J)
-	btScalar released[3] = {0, 0, 0};
-	for (int m = 0; m < 3; ++m)
-	{
-		Column column(modes[m], masses, 0, 0, btScalar(0.5), 0);
-		const btScalar potential0 = column.potentialEnergy();
-		for (int s = 0; s < 120; ++s)
-		{
-			column.world->stepSimulation(kDt, 0, kDt);
-			const btScalar give = potential0 - column.potentialEnergy();
-			excess[m] = btMax(excess[m], column.kineticEnergy() - btMax(btScalar(0), give));
-			released[m] = give;
-			EXPECT_TRUE(std::isfinite(double(column.kineticEnergy()))) << names[m];
-		}
-	}
-	std::printf("CONSERVATION | column past the fixation limit | kinetic minus released potential, largest over 2 s:");
-	for (int m = 0; m < 3; ++m) std::printf(" %s %.3g J (released %.3g J)", names[m], double(excess[m]), double(released[m]));
-	std::printf("\n");
+	const EnergyExcess e = measureEnergyExcess(masses, "column past the fixation limit");
+	for (int m = 0; m < 3; ++m) EXPECT_TRUE(e.finite[m]) << e.names[m];
 	// Round-off: 1e-6 of the heavy box's weight over a fall of the column's height (2.5 m).
 	const btScalar bound = btScalar(1e-6) * masses.back() * kG * btScalar(2.5) + btScalar(1e-3);
-	EXPECT_LE(excess[1], bound) << names[1];
-	EXPECT_LE(excess[2], bound) << names[2];
+	EXPECT_LE(e.excess[1], bound) << e.names[1];
+	EXPECT_LE(e.excess[2], bound) << e.names[2];
 }
