@@ -1,0 +1,153 @@
+// Conservation specs of the converging step on the stacking scenes (docs/design.md section 4u):
+// the registry's tower, pyramid, wall and round tower, built as the demos build them, with the
+// ground made frictionless before the first step (the bodies keep the scene's friction among
+// themselves). Each structure is in equilibrium, so physics says: it stands, its horizontal
+// momentum and its angular momentum about the vertical stay at their start values (nothing acts
+// on it horizontally but its own contacts; bound 1e-6 of m g t, round-off), and it gains no
+// energy (kinetic plus potential never above its start value, within round-off).
+//
+// Modes: stock SI and the default step (printed, not asserted: neither conserves; section 4u),
+// the converging step in world and solver-only mode (asserted) and its classic order (momentum
+// asserted). 60 Hz, 10 iterations, 5 s. Each test prints one line
+//   ICE | <scene> | <mode> dp ... dL ... drift ... gain ... | ...
+// before it asserts.
+
+#include <BulletShockPropagation/btShockPropagationCommon.h>
+#include <harness/Trial.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+enum Mode
+{
+	kStock,
+	kDefault,
+	kWorld,
+	kSolver,
+	kClassic,
+	kNumModes
+};
+const char* kModeNames[kNumModes] = {"stock", "default", "world", "solver", "classic"};
+
+struct Outcome
+{
+	double momentum = 0;  // largest |horizontal momentum - start| (kg m/s)
+	double angular = 0;   // largest |angular momentum about the vertical - start| (kg m^2/s)
+	double drift = 0;     // largest body displacement from the start (m)
+	double gain = 0;      // largest (kinetic + potential) - start (J)
+	double bound = 0;     // 1e-6 m g t (kg m/s)
+	double mass = 0;      // kg
+};
+
+harness::SolverSpec specOf(Mode mode)
+{
+	harness::SolverSpec s;
+	s.iterations = 10;
+	s.kind = mode == kStock ? harness::SolverKind::StockSI : mode == kSolver ? harness::SolverKind::ShockSolverOnly : harness::SolverKind::ShockWorld;
+	s.settings.m_diagnostics.m_convergingStep = mode != kDefault && mode != kStock;
+	s.settings.m_weightFeeling = mode != kClassic;
+	return s;
+}
+
+struct Totals
+{
+	btVector3 momentum{0, 0, 0};
+	double angular = 0, energy = 0, mass = 0;
+};
+
+Totals totals(const std::vector<btRigidBody*>& bodies, double g)
+{
+	Totals t;
+	for (const btRigidBody* b : bodies)
+	{
+		if (!(b->getInvMass() > 0)) continue;
+		const btScalar m = btScalar(1) / b->getInvMass();
+		const btVector3 v = b->getLinearVelocity(), w = b->getAngularVelocity();
+		const btVector3 spin = b->getInvInertiaTensorWorld().inverse() * w;
+		t.momentum += m * v;
+		t.angular += double(spin.y() + b->getCenterOfMassPosition().cross(m * v).y());
+		t.energy += 0.5 * double(m * v.length2() + w.dot(spin)) + double(m) * g * double(b->getCenterOfMassPosition().y());
+		t.mass += double(m);
+	}
+	return t;
+}
+
+Outcome run(Mode mode, const std::string& scene, const std::vector<std::pair<std::string, double>>& params, double seconds)
+{
+	harness::Trial trial(specOf(mode), scene, params);
+	btDiscreteDynamicsWorld& world = trial.simulation().world();
+	for (int i = 0; i < world.getNumCollisionObjects(); ++i)
+	{
+		btCollisionObject* object = world.getCollisionObjectArray()[i];
+		if (object->isStaticOrKinematicObject()) object->setFriction(0);
+	}
+	const double g = double(-world.getGravity().y());
+	const Totals start = totals(trial.bodies(), g);
+	Outcome out;
+	out.mass = start.mass;
+	const int steps = int(seconds * 60 + 0.5);
+	for (int s = 0; s < steps; ++s)
+	{
+		trial.step();
+		const Totals now = totals(trial.bodies(), g);
+		btVector3 dp = now.momentum - start.momentum;
+		dp.setY(0);
+		out.momentum = std::max(out.momentum, double(dp.length()));
+		out.angular = std::max(out.angular, std::abs(now.angular - start.angular));
+		out.gain = std::max(out.gain, now.energy - start.energy);
+	}
+	out.drift = trial.maxDrift();
+	out.bound = 1e-6 * start.mass * g * seconds;
+	return out;
+}
+
+void report(const std::string& label, const Outcome* o)
+{
+	std::printf("ICE | %s", label.c_str());
+	for (int m = 0; m < kNumModes; ++m)
+		std::printf(" | %s dp %.2g kg m/s dL %.2g kg m^2/s drift %.3g cm gain %.2g J", kModeNames[m], o[m].momentum, o[m].angular,
+					o[m].drift * 100, o[m].gain);
+	std::printf(" | bound dp %.2g, %.0f kg\n", o[0].bound, o[0].mass);
+}
+
+void expectConserved(const std::string& scene, const std::vector<std::pair<std::string, double>>& params, const std::string& label)
+{
+	const double seconds = 5;
+	Outcome o[kNumModes];
+	for (int m = 0; m < kNumModes; ++m) o[m] = run(Mode(m), scene, params, seconds);
+	report(label, o);
+	// Round-off of the energy: 1e-6 of the structure's weight times 1 m.
+	const double energyBound = 1e-6 * o[0].mass * 9.81;
+	for (Mode m : {kWorld, kSolver})
+	{
+		EXPECT_LE(o[m].momentum, o[m].bound) << kModeNames[m];
+		EXPECT_LE(o[m].angular, o[m].bound) << kModeNames[m];
+		EXPECT_LE(o[m].drift, 0.01) << kModeNames[m];  // it stands
+		EXPECT_LE(o[m].gain, energyBound) << kModeNames[m];
+	}
+	EXPECT_LE(o[kClassic].momentum, o[kClassic].bound);
+}
+}  // namespace
+
+// Tower of 20 boxes: stock SI crushes it (about 25 m of drift), the converging step holds it.
+TEST(StructuresOnIce, TowerOf20KeepsItsMomentumAndStands) { expectConserved("tower", {{"n", 20}}, "tower of 20"); }
+
+// Pyramid of base 12 (78 boxes): stock SI drifts about 1.7 cm, the converging step holds it.
+TEST(StructuresOnIce, PyramidOfBase12KeepsItsMomentumAndStands) { expectConserved("pyramid", {{"base", 12}}, "pyramid of base 12"); }
+
+// Known failures of the converging step (docs/design.md section 4u, "Structures on ice"): run them
+// with --gtest_also_run_disabled_tests. From a base of 16 the pyramid's predictor cycles diverge
+// once its residual sits at the convergence speed (base 16: 1.0e-6, 3.4e-6, 1.2e-4 m/s over three
+// cycles at 2.7 s); the next step's line search keeps 8% of the prediction, the corrector's sweeps
+// from zero impulses cannot carry the structure, it sags and the position correction lifts it:
+// energy from nothing. Base 20: 6.8 m of drift and 1.5e3 J gained in world mode (stock 5.3 cm,
+// 0 J); the wall 13.9 m, 480 J (stock 16.7 m, 0 J); the round tower 15.3 m, 2.3e3 J (stock 43 cm).
+TEST(StructuresOnIce, DISABLED_PyramidOfBase20KeepsItsMomentumAndStands) { expectConserved("pyramid", {{"base", 20}}, "pyramid of base 20"); }
+TEST(StructuresOnIce, DISABLED_WallKeepsItsMomentumAndStands) { expectConserved("wall", {}, "wall"); }
+TEST(StructuresOnIce, DISABLED_RoundTowerKeepsItsMomentumAndStands) { expectConserved("round_tower", {}, "round tower"); }
