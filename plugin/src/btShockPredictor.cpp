@@ -217,13 +217,14 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 		m_slope[component] += mass * dv.dot(v) + Idw.dot(w);
 		m_curvature[component] += mass * dv.length2() + Idw.dot(dw);
 	}
-	btScalar smallest = 1;
+	btScalar smallest = 1, largest = 0;
 	for (int c = 0; c < m_alpha.size(); ++c)
 	{
 		m_alpha[c] = m_curvature[c] > btScalar(0) ? btMax(btScalar(0), btMin(btScalar(1), -m_slope[c] / m_curvature[c])) : btScalar(1);
 		if (m_alpha[c] < smallest) smallest = m_alpha[c];
+		if (m_curvature[c] > btScalar(0) && m_alpha[c] > largest) largest = m_alpha[c];
 	}
-	if (!(smallest < btScalar(1))) return btScalar(1);
+	if (!(smallest < btScalar(1))) return largest;
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
 		btSolverConstraint& c = *m_rows[i].m_row;
@@ -242,7 +243,7 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 		body.internalGetDeltaLinearVelocity() = m_startLinear[i] + alpha * (body.internalGetDeltaLinearVelocity() - m_startLinear[i]);
 		body.internalGetDeltaAngularVelocity() = m_startAngular[i] + alpha * (body.internalGetDeltaAngularVelocity() - m_startAngular[i]);
 	}
-	return smallest;
+	return largest;
 }
 
 btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& bodies)
@@ -464,7 +465,6 @@ void btShockPredictor::deliver(int layer, btAlignedObjectArray<btSolverBody>& bo
 int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling, int cycles)
 {
 	int run = 0;
-	recordStart(pools.m_bodies);
 	// The classic order delivers each cycle's reactions after its up pass and meets them only in
 	// the next cycle: a load reaches the ground one layer per cycle and the ground's answer the
 	// top one layer per cycle, so it may take 2 K cycles (header, "Cycles").
@@ -472,10 +472,14 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 	for (int cycle = 0; cycle < cycleCount; ++cycle)
 	{
 		// A cycle after the first starts from the last one's velocities: each layer meets the
-		// final motion of the layers below it. Cycles end once the coupled residual (header) is
-		// within the convergence speed, or, with weight feeling, once no layer needs more than
-		// one sweep (its down pass has then met every delivered reaction).
+		// final motion of the layers below it. Each cycle's change is line searched on its own
+		// (header, "Line search"), so a cycle that would move away from the solution is shortened
+		// before the next one starts from it. Cycles end once the coupled residual (header) is
+		// within the convergence speed, once a search keeps nothing of its cycle (the next cycle
+		// would start from the same velocities and repeat it), or, with weight feeling, once no
+		// layer needs more than one sweep (its down pass has then met every delivered reaction).
 		int most = 0;
+		recordStart(pools.m_bodies);
 		for (int k = 0; k < m_numLayers; ++k) most = btMax(most, sweepLayer(k, pools, sweeps, convergedSpeed, false));
 		if (weightFeeling) findWelds(pools);
 		for (int k = m_numLayers - 1; k >= 0; --k)
@@ -484,8 +488,8 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 			deliver(k, pools.m_bodies);
 		}
 		run += most;
+		if (!(lineSearch(pools.m_bodies) > btScalar(0))) break;
 		if ((weightFeeling && cycle > 0 && most <= 1) || residual(pools.m_bodies) <= convergedSpeed) break;
 	}
-	lineSearch(pools.m_bodies);
 	return run;
 }
