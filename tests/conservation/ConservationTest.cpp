@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -51,11 +52,11 @@ struct Column
 	std::vector<std::unique_ptr<btDefaultMotionState>> states;
 	std::vector<std::unique_ptr<btRigidBody>> bodies;  // [0]: the floor
 
-	Column(Mode mode, int n, btScalar topMass, btScalar floorMu, btScalar v0) : Column(mode, std::vector<btScalar>(), n, topMass, floorMu, v0) {}
-	/// masses: each box's, bottom first (empty: n boxes of 1 kg, the top one topMass).
-	Column(Mode mode, const std::vector<btScalar>& masses, int n, btScalar topMass, btScalar floorMu, btScalar v0)
+	/// n boxes of 1 kg, the top one topMass.
+	Column(Mode mode, int n, btScalar topMass, btScalar floorMu, btScalar v0) : Column(mode, unitMassesUnder(n, topMass), floorMu, v0) {}
+	/// masses: each box's, bottom first.
+	Column(Mode mode, const std::vector<btScalar>& masses, btScalar floorMu, btScalar v0)
 	{
-		if (!masses.empty()) n = int(masses.size());
 		btShockPropagationSettings settings;
 		settings.m_diagnostics.m_convergingStep = mode != Mode::DefaultWorld;
 		settings.m_weightFeeling = mode != Mode::Classic;
@@ -69,14 +70,19 @@ struct Column
 			world.reset(new btShockPropagationDynamicsWorld(dispatcher.get(), broadphase.get(), solver.get(), configuration.get()));
 		world->setGravity(btVector3(0, -kG, 0));
 		add(0, btVector3(0, btScalar(-0.5), 0), &floorShape, floorMu);
-		for (int i = 0; i < n; ++i)
+		for (size_t i = 0; i < masses.size(); ++i)
 		{
 			// 10 micrometres of overlap per contact, so every contact exists at the first step.
 			const btVector3 at(0, btScalar(0.25) + btScalar(0.5) * btScalar(i) - btScalar(1e-5) * btScalar(i + 1), 0);
-			const btScalar mass = !masses.empty() ? masses[size_t(i)] : i == n - 1 ? topMass : btScalar(1);
-			btRigidBody* body = add(mass, at, &boxShape, btScalar(0.6));
+			btRigidBody* body = add(masses[i], at, &boxShape, btScalar(0.6));
 			body->setLinearVelocity(btVector3(v0, 0, 0));
 		}
+	}
+	static std::vector<btScalar> unitMassesUnder(int n, btScalar topMass)
+	{
+		std::vector<btScalar> masses(size_t(std::max(n, 0)), btScalar(1));
+		if (!masses.empty()) masses.back() = topMass;
+		return masses;
 	}
 	~Column()
 	{
@@ -279,7 +285,7 @@ EnergyExcess measureEnergyExcess(const std::vector<btScalar>& masses, const char
 	const Mode modes[] = {Mode::Stock, Mode::World, Mode::Solver};
 	for (int m = 0; m < 3; ++m)
 	{
-		Column column(modes[m], masses, 0, 0, btScalar(0.5), 0);
+		Column column(modes[m], masses, btScalar(0.5), 0);
 		const btScalar potential0 = column.potentialEnergy();
 		for (int s = 0; s < 120; ++s)
 		{
