@@ -41,6 +41,7 @@ subject to the following restrictions:
 #include "btBodyChecks.h"
 #include "btBoxFaceCorners.h"
 #include "btShockPredictor.h"
+#include "btWithheldReactions.h"
 
 #include <cmath>
 
@@ -59,6 +60,7 @@ void btShockPropagationConstraintSolver::solveConverging(const btContactSolverIn
 	m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
 	clock.reset();
 	finishRows(stepInfo);
+	markPointsSolved();
 	correctPositions(info, false, true);
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }
@@ -144,4 +146,16 @@ void btShockPropagationConstraintSolver::correctVelocities(const btContactSolver
 void btShockPropagationConstraintSolver::finishRows(const btContactSolverInfo& stepInfo)
 {
 	solveGroupCacheFriendlyFinish(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(), stepInfo);
+}
+
+void btShockPropagationConstraintSolver::markPointsSolved()
+{
+	// The points' impulses are this step's (getAppliedImpulse), but no warm start for Bullet's own
+	// solve of a group without stacks: their felt share is set unequal to them (solveGroup).
+	for (int i = 0; i < m_manifolds.size(); ++i)
+		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
+		{
+			btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
+			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse == btScalar(0) ? btScalar(1) : btScalar(0));
+		}
 }

@@ -122,6 +122,7 @@ private:
 	void predictVelocities(const btContactSolverInfo& info);
 	void correctVelocities(const btContactSolverInfo& info, const btContactSolverInfo& stepInfo);
 	void finishRows(const btContactSolverInfo& stepInfo);
+	void markPointsSolved();
 	void assignRowsToLayers();
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
 	void limitWarmStart(const btContactSolverInfo& info);
