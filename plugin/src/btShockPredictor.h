@@ -121,9 +121,13 @@ public:
 	/// position correction alike.
 	static btScalar maxFixationScale() { return btScalar(1) / btSqrt(SIMD_EPSILON); }
 	/// s = total / freeTerm of a row whose lower side would be fixated (total = D_A + D_B + c,
-	/// freeTerm = D_free + c), or 0 where no impulse can move the free side (a zero-mass axis:
-	/// the row has nothing to solve). The side is fixated where s <= maxFixationScale().
-	static btScalar fixationScale(btScalar freeTerm, btScalar total) { return freeTerm > total * btScalar(1e-7) ? total / freeTerm : btScalar(0); }
+	/// freeTerm = D_free + c), or 0 where no impulse can move the free side (freeTerm is 0: a
+	/// zero-mass axis, the row has nothing to solve). The side is fixated where s <=
+	/// maxFixationScale(). A free side that moves, however little, is no zero-mass axis: a 1e7 kg
+	/// box on a 1 kg one (s = 1e7 + 1) was once taken for one, its row skipped by the predictor
+	/// and its position fixated, and the box's velocity fell as g t while its position held
+	/// (1.1e8 J from nothing in 2 s; docs/design.md 4u).
+	static btScalar fixationScale(btScalar freeTerm, btScalar total) { return freeTerm > btScalar(0) ? total / freeTerm : btScalar(0); }
 
 private:
 	enum Kind
