@@ -148,35 +148,9 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 
 	if ((numLayers <= 1 && !m_settings.m_diagnostics.m_layerFlatGroups) || m_bodies.size() == 0)
 	{
-		// No stacks: Bullet's own solve of the group, with the app's settings (D9). The warm start
-		// limit (D5) holds here too: a group that was layered last step may have left impulses
-		// sized for a heavy upper body on a light one.
+		// No stacks: Bullet's own solve of the group, with the app's settings (D9).
 		clock.reset();
-		if (!m_settings.m_diagnostics.m_convergingStep) limitWarmStart(info);
-		// Bullet's solve warm starts from its own impulses only: a point last solved by the
-		// converging step (which starts its rows from zero) starts from zero here too. Those
-		// impulses are a stacked group's loads; where the group came apart they no longer
-		// balance, and Bullet's few sweeps turned a column's load on an 18 g body into 1.7e3 m/s
-		// (hostile seed 876; docs/design.md 4u). A point Bullet's solve left keeps its impulse
-		// as its felt share (below), so a group that stays flat is warm started as stock.
-		else
-			for (int i = 0; i < m_manifolds.size(); ++i)
-				for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
-				{
-					btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
-					if (btWithheldReactions::feltShare(cp) == cp.m_appliedImpulse) continue;
-					cp.m_appliedImpulse = cp.m_appliedImpulseLateral1 = cp.m_appliedImpulseLateral2 = 0;
-				}
-		btSequentialImpulseConstraintSolver::solveGroup(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(),
-														m_manifolds.size() ? &m_manifolds[0] : 0, m_manifolds.size(),
-														m_constraints.size() ? &m_constraints[0] : 0, m_constraints.size(), info, debugDrawer, 0);
-		// Every body felt every impulse of this solve (D5: the next warm start gives it to both).
-		for (int i = 0; i < m_manifolds.size(); ++i)
-			for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
-			{
-				btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
-				btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
-			}
+		solveFlat(info, debugDrawer);
 		m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
 		return btScalar(0);
 	}
@@ -367,6 +341,50 @@ btScalar btShockPropagationConstraintSolver::largestGravity() const
 		if (rb && rb->getInvMass() > btScalar(0)) g = btMax(g, rb->getGravity().length());
 	}
 	return g;
+}
+
+void btShockPropagationConstraintSolver::solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+	// A group without stacks, as a stock step solves it: its warm start made Bullet's (the
+	// default step caps it, D5, since a group layered last step may have left impulses sized for
+	// a heavy upper body on a light one; the converging step's points start from zero), Bullet's
+	// solveGroup, and each point's impulse recorded as felt by both bodies.
+	if (m_settings.m_diagnostics.m_convergingStep)
+		startFromOwnImpulses();
+	else
+		limitWarmStart(info);
+	btSequentialImpulseConstraintSolver::solveGroup(m_bodies.size() ? &m_bodies[0] : 0, m_bodies.size(), m_manifolds.size() ? &m_manifolds[0] : 0,
+													m_manifolds.size(), m_constraints.size() ? &m_constraints[0] : 0, m_constraints.size(), info,
+													debugDrawer, 0);
+	markPointsFelt();
+}
+
+void btShockPropagationConstraintSolver::startFromOwnImpulses()
+{
+	// Bullet's solve warm starts from its own impulses only: a point last solved by the converging
+	// step (which starts its rows from zero; markPointsSolved set its felt share unequal to its
+	// impulse) starts from zero here too. Those impulses are a stacked group's loads; where the
+	// group came apart they no longer balance, and Bullet's few sweeps turned a column's load on
+	// an 18 g body into 1.7e3 m/s (hostile seed 876; docs/design.md 4u). A point Bullet's solve
+	// left keeps its impulse (markPointsFelt), so a group that stays flat is warm started as stock.
+	for (int i = 0; i < m_manifolds.size(); ++i)
+		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
+		{
+			btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
+			if (btWithheldReactions::feltShare(cp) == cp.m_appliedImpulse) continue;
+			cp.m_appliedImpulse = cp.m_appliedImpulseLateral1 = cp.m_appliedImpulseLateral2 = 0;
+		}
+}
+
+void btShockPropagationConstraintSolver::markPointsFelt()
+{
+	// Every body felt every impulse of Bullet's solve (D5: the next warm start gives it to both).
+	for (int i = 0; i < m_manifolds.size(); ++i)
+		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
+		{
+			btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
+			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
+		}
 }
 
 void btShockPropagationConstraintSolver::limitWarmStart(const btContactSolverInfo& info)

@@ -115,6 +115,10 @@ private:
 	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 					 btTypedConstraint** constraints, int numConstraints, bool countInStatistics);
 	void buildGraph();
+	// A group without stacks: Bullet's own solve, warm started from its own impulses.
+	void solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	void startFromOwnImpulses();
+	void markPointsFelt();
 	void solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	// The converging step (opt-in, btShockPropagationDiagnostics::m_convergingStep), its stages in order.
 	void solveConverging(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
