@@ -405,31 +405,34 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 			}
 		}
 		if (!(largest > convergedSpeed)) break;
-		// A layer that cannot reach the convergence speed within its sweeps ends now. Each time
-		// the sweep count doubles (8, 16, 32, ...), the largest change of its last quarter over
-		// that of the quarter before is its rate per quarter (a quarter's largest, not one
-		// sweep's: a sweep's change is not monotone while rows reach and leave their bounds);
-		// at that rate it needs log(converged / largest) / log(rate) quarters more. A layer
-		// without a solution keeps its rate at 1 and ends at 8 sweeps: a free body wedged
-		// between fixated ones whose velocities close on it (no velocity of it holds both rows;
-		// its impulses grow by the same amount each sweep), as in a pile (docs/design.md 4u).
-		m_sweepChange.resize(s + 1);
-		m_sweepChange[s] = largest;
-		const int done = s + 1;
-		if (done >= 8 && (done & (done - 1)) == 0)
-		{
-			const int quarter = done / 4;
-			btScalar before = 0, last = 0;
-			for (int j = done - 2 * quarter; j < done - quarter; ++j) before = btMax(before, m_sweepChange[j]);
-			for (int j = done - quarter; j < done; ++j) last = btMax(last, m_sweepChange[j]);
-			const btScalar rate = last / before;
-			if (!(rate < btScalar(1))) break;
-			const btScalar needed = quarter * btLog(convergedSpeed / largest) / btLog(rate);
-			if (done + needed > sweeps) break;
-		}
+		if (cannotConverge(m_sweepChange, s, largest, convergedSpeed, sweeps)) break;
 	}
-	if (anyComposite) finishComposites(layer, pools);
+	if (anyComposite) finishComposites(layer, pools, sweeps, convergedSpeed);
 	return run;
+}
+
+bool btShockPredictor::cannotConverge(btAlignedObjectArray<btScalar>& changes, int sweep, btScalar largest, btScalar convergedSpeed, int sweeps)
+{
+	// Sweeps that cannot reach the convergence speed within their budget end now. Each time the
+	// sweep count doubles (8, 16, 32, ...), the largest change of its last quarter over that of
+	// the quarter before is its rate per quarter (a quarter's largest, not one sweep's: a sweep's
+	// change is not monotone while rows reach and leave their bounds); at that rate it needs
+	// log(converged / largest) / log(rate) quarters more. A solve without a solution keeps its
+	// rate at 1 and ends at 8 sweeps: a free body wedged between fixated ones whose velocities
+	// close on it (no velocity of it holds both rows; its impulses grow by the same amount each
+	// sweep), as in a pile (docs/design.md 4u).
+	changes.resize(sweep + 1);
+	changes[sweep] = largest;
+	const int done = sweep + 1;
+	if (done < 8 || (done & (done - 1)) != 0) return false;
+	const int quarter = done / 4;
+	btScalar before = 0, last = 0;
+	for (int j = done - 2 * quarter; j < done - quarter; ++j) before = btMax(before, changes[j]);
+	for (int j = done - quarter; j < done; ++j) last = btMax(last, changes[j]);
+	const btScalar rate = last / before;
+	if (!(rate < btScalar(1))) return true;
+	const btScalar needed = quarter * btLog(convergedSpeed / largest) / btLog(rate);
+	return done + needed > sweeps;
 }
 
 btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bodies) const

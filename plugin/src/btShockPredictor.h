@@ -244,6 +244,10 @@ private:
 	btAlignedObjectArray<char> m_rowActive;    // per row of the layer being swept: swept in the current sweep
 	unsigned m_stamp = 0;
 	btAlignedObjectArray<btScalar> m_sweepChange;  // per sweep of the current layer: its largest row velocity change (m/s)
+	btAlignedObjectArray<btScalar> m_weldChange;   // per weld sweep (settleWelds): the same
+	/// Records a sweep's largest change (m/s); true once the sweeps cannot reach convergedSpeed
+	/// within sweeps at their rate (or their rate is 1: no solution).
+	static bool cannotConverge(btAlignedObjectArray<btScalar>& changes, int sweep, btScalar largest, btScalar convergedSpeed, int sweeps);
 	btAlignedObjectArray<Row> m_rows;        // by layer
 	btAlignedObjectArray<int> m_layerStart;  // m_numLayers + 1 offsets into m_rows
 	btAlignedObjectArray<int> m_count, m_cursor;
@@ -294,7 +298,8 @@ private:
 	void formComposites(int layer, const Pools& pools, btScalar heldSpeed);
 	btScalar solveCompositeRow(Row& row, Composite& composite, btAlignedObjectArray<btSolverBody>& bodies);
 	btScalar compositeMotion(int layer, const btAlignedObjectArray<btSolverBody>& bodies) const;
-	void finishComposites(int layer, const Pools& pools);
+	void finishComposites(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
+	void settleWelds(int sweeps, btScalar convergedSpeed, btAlignedObjectArray<btSolverBody>& bodies);
 	bool weldFactor(int body, struct btCholesky6& factor) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
