@@ -116,7 +116,8 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 	if (info.m_solverMode & SOLVER_USE_WARMSTARTING) m_predictor->warmStartPastLimit(pools, info.m_warmstartingFactor);
 	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;
-	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling, m_settings.m_diagnostics.m_predictorCycles);
+	m_stats.m_numLayerSweeps += m_predictor->predict(pools, sweeps, converged, m_settings.m_weightFeeling, m_settings.m_diagnostics.m_predictorCycles,
+													 m_settings.m_diagnostics.m_predictorForcing);
 }
 
 void btShockPropagationConstraintSolver::correctVelocities(const btContactSolverInfo& info, const btContactSolverInfo& stepInfo)

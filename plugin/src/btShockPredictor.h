@@ -59,11 +59,17 @@ class btStackLayers;
 /// positive error, above its lower bound for a negative one; a friction or rolling row's bounds
 /// are those its sweep sets, rowBounds), is at most the convergence speed: then no PGS step of the coupled
 /// problem would change a velocity by more than a layer's own sweeps were allowed to leave.
-/// With weight feeling they also end once no layer needs a second sweep: its down pass has met
-/// every reaction delivered. The classic order (no down pass) delivers each cycle's reactions
-/// after its up pass and meets them only in the next cycle, so a cycle of one-sweep layers says
-/// nothing there; a load reaches the ground one layer per cycle and the ground's answer the top
-/// one layer per cycle, so the classic order runs up to max(cycles, 2 K) cycles, ended by the
+/// With weight feeling they also end once no layer needs a second sweep (its down pass has met
+/// every reaction delivered) or once a cycle does not lower r: in a pile the cycles' residual
+/// stays at 0.1-3 m/s, and each further cycle is another sweep of every layer that the search
+/// mostly discards. A cycle after the first is an inexact solve: its layer visits end at
+/// max(convergence speed, forcing r_last) (forcing 0.01), as an inexact Newton method solves its
+/// inner systems only as far as the outer error warrants. At 0.1 the column tipping over a ledge
+/// turns 11-13% faster than rigid-body dynamics says; at 0.01, 4% (exact visits: 3%). The
+/// classic order (no down pass) delivers each cycle's reactions after its up pass and meets them
+/// only in the next cycle, so neither a cycle of one-sweep layers nor one whose residual rises
+/// says anything there; a load reaches the ground one layer per cycle and the ground's answer the
+/// top one layer per cycle, so the classic order runs up to max(cycles, 2 K) cycles, ended by the
 /// residual alone (K layers).
 ///
 /// Line search. Where fixation is wrong (a support that slides) the passes' change is not the
@@ -102,8 +108,10 @@ public:
 			   int numComponents);
 
 	/// Up pass then down pass (or delivery); at most sweeps per layer and pass, a layer ends once
-	/// a sweep changes no row's velocity by more than convergedSpeed (m/s). Returns sweeps run.
-	int predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling, int cycles);
+	/// a sweep changes no row's velocity by more than convergedSpeed (m/s) in the first cycle, by
+	/// more than max(convergedSpeed, forcing times the last cycle's coupled residual) in later
+	/// ones. Returns sweeps run.
+	int predict(const Pools& pools, int sweeps, btScalar convergedSpeed, bool weightFeeling, int cycles, btScalar forcing);
 
 	int getNumLayers() const { return m_numLayers; }
 
@@ -234,6 +242,7 @@ private:
 	btScalar lineSearch(btAlignedObjectArray<btSolverBody>& bodies);
 
 	int m_numLayers = 0;
+	btScalar m_visitSpeed = 0;  // m/s: a layer visit ends once a sweep changes no row by more than this (predict)
 	const btAlignedObjectArray<int>* m_componentOfSolverBody = 0;
 	btAlignedObjectArray<btScalar> m_slope, m_curvature, m_alpha;  // line search, per component
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
