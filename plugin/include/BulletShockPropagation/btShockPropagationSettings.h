@@ -291,8 +291,8 @@ struct btShockPropagationDiagnostics
 	/// own sweeps as the corrector (ceil(f N), ended once converged), Bullet's finish, the layered
 	/// position correction. Momentum is conserved by construction and it holds the 26 truths at 5,
 	/// 10 and 20 iterations, but the round tower on a frictionless ground collapses under it, and
-	/// in piles it costs several times the default step (the pit of 100 cubes about 25x stock), so
-	/// it is off.
+	/// in piles it costs more than the default step (the pit of 100 cubes about 10x stock), so it
+	/// is off.
 	bool m_convergingStep = false;
 
 	/// The converging step's predictor: a layer ends once a sweep moves no row's bodies by more
