@@ -7,11 +7,8 @@
 // BSP_TRUTH_DETAIL=1 each configuration's detail line is printed as well.
 #include <truth/TruthCase.h>
 
-#include <harness/Trial.h>
-
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -143,33 +140,6 @@ TEST_P(ConvergingTruth, HoldsUnderTheConvergingStep)
 INSTANTIATE_TEST_SUITE_P(Cases, ConvergingTruth, ::testing::Range(size_t(0), truth::truthCases().size()),
 						 [](const ::testing::TestParamInfo<size_t>& info) { return truth::truthCases().at(info.param).name; });
 
-/// Largest displacement of any box relative to the bottom box over `seconds` with a horizontal force
-/// `force` (N) on the bottom box every step (the pushed stack of the truth suite: 5 boxes of 1 kg,
-/// box-ground mu 0.5, box-box mu 1); `slope` gets the bottom box's velocity gain per second over the
-/// last second (m/s^2).
-double pushedStackApart(const harness::SolverSpec& spec, double force, double seconds, double& slope)
-{
-	harness::Trial trial(spec, "pushed_stack", {{"n", 5}, {"groundMu", 0.5}, {"boxMu", 1.0}});
-	const std::vector<btRigidBody*>& boxes = trial.bodies();
-	btRigidBody* bottom = trial.named("bottom");
-	std::vector<btVector3> start;
-	for (const btRigidBody* b : boxes) start.push_back(b->getCenterOfMassPosition());
-	const btVector3 bottomStart = bottom->getCenterOfMassPosition();
-	const int steps = int(seconds * 60 + 0.5);
-	double apart = 0, speedBefore = 0;
-	for (int k = 0; k < steps; ++k)
-	{
-		bottom->applyCentralForce(btVector3(btScalar(force), 0, 0));
-		trial.step();
-		const btVector3 moved = bottom->getCenterOfMassPosition() - bottomStart;
-		for (size_t i = 0; i < boxes.size(); ++i)
-			apart = std::max(apart, double((boxes[i]->getCenterOfMassPosition() - start[i] - moved).length()));
-		if (k == steps - 61) speedBefore = double(bottom->getLinearVelocity().x());
-	}
-	slope = double(bottom->getLinearVelocity().x()) - speedBefore;
-	return apart;
-}
-
 TEST(ConvergingStep, APushedStackSlidesAsOneBody)
 {
 	// Coulomb: 5 boxes pushed at the bottom with F = 1.4 mu W slide together at (F - mu W) / M =
@@ -177,8 +147,7 @@ TEST(ConvergingStep, APushedStackSlidesAsOneBody)
 	// moves relative to the bottom one. The converging step's down pass carries them as a welded
 	// composite; its weld rows are settled after the transfer (btWeldedComposites.cpp, settleWelds).
 	// Without that the boxes parted by 0.8 to 8.6 mm in 2 s whenever a corner of a weld let go
-	// (float; the truth suite's bound is 1 cm), with it 0.014 mm. Stock SI parts them by 1.1 m.
-	const double weight = 5 * 9.81, force = 1.4 * 0.5 * weight, expected = (force - 0.5 * weight) / 5;
+	// (float; the truth suite's bound is 1 cm), with it 0.015 mm. Stock SI parts them by 1.1 m.
 	for (harness::SolverKind kind : {harness::SolverKind::ShockWorld, harness::SolverKind::ShockSolverOnly})
 		for (int iterations : {5, 10, 20})
 		{
@@ -186,20 +155,19 @@ TEST(ConvergingStep, APushedStackSlidesAsOneBody)
 			spec.kind = kind;
 			spec.iterations = iterations;
 			spec.settings.m_diagnostics.m_convergingStep = true;
-			double a = 0;
-			const double apart = pushedStackApart(spec, force, 2.0, a);
+			const truth::PushedStack p = truth::measurePushedStack(spec, 1.4);
 			std::printf("PUSHED | converging %s, %d iterations: boxes apart %.2e m, a %.4f m/s^2 (Coulomb %.4f)\n",
-						kind == harness::SolverKind::ShockWorld ? "world" : "solver-only", iterations, apart, a, expected);
-			EXPECT_LT(apart, 1e-3) << iterations << " iterations";
-			EXPECT_NEAR(a, expected, 0.02 * expected) << iterations << " iterations";
+						kind == harness::SolverKind::ShockWorld ? "world" : "solver-only", iterations, p.apart, p.acceleration, p.expected);
+			EXPECT_LT(p.apart, 1e-3) << iterations << " iterations";
+			EXPECT_NEAR(p.acceleration, p.expected, 0.02 * p.expected) << iterations << " iterations";
+			EXPECT_FALSE(p.nonFinite);
 		}
 	harness::SolverSpec stock;
 	stock.kind = harness::SolverKind::StockSI;
 	stock.iterations = 10;
-	double a = 0;
-	const double stockApart = pushedStackApart(stock, force, 2.0, a);
-	std::printf("PUSHED | stock SI, 10 iterations: boxes apart %.2e m\n", stockApart);
-	EXPECT_GT(stockApart, 1e-2);  // the scene tells a solver that lets the boxes slip from one that does not
+	const truth::PushedStack p = truth::measurePushedStack(stock, 1.4);
+	std::printf("PUSHED | stock SI, 10 iterations: boxes apart %.2e m\n", p.apart);
+	EXPECT_GT(p.apart, 1e-2);  // the scene tells a solver that lets the boxes slip from one that does not
 }
 
 TEST(TruthAtFewIterations, AtTheAppsFiveIterationsTheRampStackSticks)

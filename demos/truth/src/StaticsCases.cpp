@@ -224,55 +224,32 @@ void slidesTogether(Verdict& v, double a, double expected, double apart, bool no
 // above the interface moves the normal force's centre back by a / g * 1 m = 0.2 m, within the 0.5 m
 // half width.
 constexpr double kPushGroundMu = 0.5;
+constexpr double kPushSlideSeconds = 2.0;  // s, measured when it slides
+constexpr double kPushRestSeconds = 3.0;   // s, measured when it must stay at rest
 
 Verdict pushedStack(const harness::SolverSpec& spec, double capacityFraction)
 {
-	harness::Trial trial(spec, "pushed_stack", {{"n", 5}, {"groundMu", kPushGroundMu}, {"boxMu", 1.0}});
-	const std::vector<btRigidBody*>& boxes = trial.bodies();
-	btRigidBody* bottom = trial.scene().named("bottom");
-	double mass = 0;
-	for (const btRigidBody* b : boxes) mass += massOf(b);
-	const double weight = mass * kGravity;
-	const double force = capacityFraction * kPushGroundMu * weight;  // N, along +x
+	const PushedStack p = measurePushedStack(spec, capacityFraction);
 	const bool slides = capacityFraction > 1;
-	const double seconds = slides ? 2.0 : 3.0;
-	const std::vector<btVector3> start = positions(boxes);
-	const btVector3 bottomStart = bottom->getCenterOfMassPosition();
-	std::vector<double> t, x;
-	double apart = 0;  // m, largest relative displacement between boxes
-	for (int k = 0; k < stepsFor(seconds); ++k)
-	{
-		bottom->applyCentralForce(btVector3(btScalar(force), 0, 0));  // Bullet clears forces every step
-		trial.step();
-		const double time = trial.simulation().time();
-		apart = std::max(apart, largestRelativeDisplacement(boxes, start, bottom, bottomStart));
-		if (time >= 0.25)
-		{
-			t.push_back(time);
-			x.push_back(bottom->getCenterOfMassPosition().x() - bottomStart.x());
-		}
-	}
-	const harness::TrialSummary s = trial.summary();
 	Verdict v;
 	if (!slides)
 	{
 		v.unit = "m";
-		v.figure = s.maxDrift;
+		v.figure = p.maxDrift;
 		v.expected = 0;
-		v.pass = s.maxDrift < kRestToleranceMeters && !s.nonFinite;
+		v.pass = p.maxDrift < kRestToleranceMeters && !p.nonFinite;
 		v.detail = format("F = %.2f mu W = %.2f N < mu W = %.2f N: must stay at rest; largest drift %.4f m in %.0f s (limit 0.01)",
-						  capacityFraction, force, kPushGroundMu * weight, s.maxDrift, seconds);
+						  capacityFraction, p.force, p.force / capacityFraction, p.maxDrift, kPushRestSeconds);
 	}
 	else
 	{
-		const double expected = (force - kPushGroundMu * weight) / mass;
-		const double a = fittedAcceleration(t, x);
-		slidesTogether(v, a, expected, apart, s.nonFinite);
+		slidesTogether(v, p.acceleration, p.expected, p.apart, p.nonFinite);
 		v.detail = format("F = %.2f mu W: a = %.3f m/s^2 against (F - mu W) / M = %.3f (within 10%%); boxes apart by %.4f m (limit 0.01)",
-						  capacityFraction, a, expected, apart);
+						  capacityFraction, p.acceleration, p.expected, p.apart);
 	}
-	if (s.nonFinite) v.detail += "; non-finite state";
-	return finished(v, trial);
+	if (p.nonFinite) v.detail += "; non-finite state";
+	v.msPerStep = p.msPerStep;
+	return v;
 }
 
 // Stack on a ramp (truth/ramp_stack): 3 boxes of 1 kg, 1 x 0.5 x 1 m, on a 20 degree ramp; box-ramp mu
@@ -491,6 +468,41 @@ void addLeverCases(std::vector<TruthCase>& cases)
 	}
 }
 }  // namespace
+
+PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction)
+{
+	harness::Trial trial(solver, "pushed_stack", {{"n", 5}, {"groundMu", kPushGroundMu}, {"boxMu", 1.0}});
+	const std::vector<btRigidBody*>& boxes = trial.bodies();
+	btRigidBody* bottom = trial.scene().named("bottom");
+	double mass = 0;
+	for (const btRigidBody* b : boxes) mass += massOf(b);
+	const double weight = mass * kGravity;
+	PushedStack p;
+	p.force = capacityFraction * kPushGroundMu * weight;  // N, along +x
+	const bool slides = capacityFraction > 1;
+	p.expected = slides ? (p.force - kPushGroundMu * weight) / mass : 0;
+	const std::vector<btVector3> start = positions(boxes);
+	const btVector3 bottomStart = bottom->getCenterOfMassPosition();
+	std::vector<double> t, x;
+	for (int k = 0; k < stepsFor(slides ? kPushSlideSeconds : kPushRestSeconds); ++k)
+	{
+		bottom->applyCentralForce(btVector3(btScalar(p.force), 0, 0));  // Bullet clears forces every step
+		trial.step();
+		const double time = trial.simulation().time();
+		p.apart = std::max(p.apart, largestRelativeDisplacement(boxes, start, bottom, bottomStart));
+		if (time >= 0.25)
+		{
+			t.push_back(time);
+			x.push_back(bottom->getCenterOfMassPosition().x() - bottomStart.x());
+		}
+	}
+	p.acceleration = fittedAcceleration(t, x);
+	const harness::TrialSummary s = trial.summary();
+	p.maxDrift = s.maxDrift;
+	p.nonFinite = s.nonFinite;
+	p.msPerStep = s.msPerStep;
+	return p;
+}
 
 void addStaticsCases(std::vector<TruthCase>& cases)
 {

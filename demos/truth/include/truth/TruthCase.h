@@ -48,6 +48,20 @@ struct LedgeTip
 };
 LedgeTip measureLedgeTip(const harness::SolverSpec& solver, double seconds);
 
+struct PushedStack
+{
+	double force = 0;         ///< N, on the bottom box every step
+	double expected = 0;      ///< m/s^2, Coulomb's (F - mu W) / M when it slides, 0 at rest
+	double acceleration = 0;  ///< m/s^2, fitted to the bottom box's travel from 0.25 s on
+	double apart = 0;         ///< m, largest displacement of a box relative to the bottom box's motion
+	double maxDrift = 0;      ///< m, largest displacement of any box
+	bool nonFinite = false;
+	double msPerStep = 0;
+};
+/// The pushed stack of the truth suite (5 boxes of 1 kg, box-ground mu 0.5, box-box mu 1) pushed at
+/// the bottom box with capacityFraction times mu W: 2 s when that exceeds 1 (it slides), else 3 s.
+PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction);
+
 /// Cases defined in src/StaticsCases.cpp and src/DynamicsCases.cpp.
 void addStaticsCases(std::vector<TruthCase>& cases);
 void addDynamicsCases(std::vector<TruthCase>& cases);
