@@ -58,12 +58,6 @@ Slide rampStack(const harness::SolverSpec& spec, double seconds)
 	return s;
 }
 
-harness::SolverSpec withoutComposites(harness::SolverSpec spec)
-{
-	spec.settings.m_diagnostics.m_slidingComposites = false;
-	return spec;
-}
-
 /// D23 is opt-in (btShockPropagationDiagnostics::m_slidingComposites).
 harness::SolverSpec withComposites(harness::SolverSpec spec)
 {
@@ -72,24 +66,15 @@ harness::SolverSpec withComposites(harness::SolverSpec spec)
 }
 }  // namespace
 
-TEST(SlidingComposites, RampStackGainsTheMomentumOfKineticFriction)
+TEST(ConvergingStep, RampStackGainsTheMomentumOfKineticFriction)
 {
-	// Momentum down the slope over M g (sin a - mu cos a) t, averaged over 0.25-2 s. Measured with
-	// composites 0.998-1.004 at 5, 10 and 20 iterations in float, 0.999-1.001 in double; without
-	// them 0.76 / 0.90 / 0.94 in float, 0.75 / 0.93 / 0.96 in double. (The pushed stack is not
-	// asserted: with composites its base can still run away from the boxes above after a contact
-	// churn event, 5 times their velocity in float at 10 iterations; docs/design.md, section 4h.)
-	for (int iterations : {5, 10, 20})
+	// Momentum down the slope over M g (sin a - mu cos a) t, averaged over 0.25-2 s, at the
+	// defaults (the converging step), world and solver-only, 5, 10 and 20 iterations.
+	for (const harness::SolverSpec& solver : {spec::shock(5), spec::shock(10), spec::shock(20), spec::shockSolverOnly(5), spec::shockSolverOnly(10), spec::shockSolverOnly(20)})
 	{
-		const Slide s = rampStack(withComposites(spec::shock(iterations)), 2.0);
-		EXPECT_NEAR(s.momentumRatio, 1.0, 0.02) << iterations << " iterations";
+		const Slide s = rampStack(solver, 2.0);
+		EXPECT_NEAR(s.momentumRatio, 1.0, 0.02) << solver.label();
 	}
-	// Without D23 and without D29 (on by default since, which carries the stack as one rigid body
-	// and gains the same momentum: 0.99 at 5 iterations).
-	harness::SolverSpec neither = withoutComposites(spec::shock(5));
-	neither.settings.m_diagnostics.m_rigidSlidingComposites = false;
-	const Slide alone = rampStack(neither, 2.0);
-	EXPECT_LT(alone.momentumRatio, 0.9) << "expected the stack without composites to lose momentum";
 }
 
 TEST(SlidingComposites, RestingStacksFormNone)

@@ -34,26 +34,6 @@ TEST(SupportBlocks, RestingLayersConvergeInTheFewestSweeps)
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 }
 
-TEST(SupportBlocks, WithoutThemEarlyEndingLayersLetTheTowerOf40Creep)
-{
-	// What the block is for: PGS alone converges slowly (rho^N), so a sweep that changes little is
-	// not a converged layer. Ended on that test without the block, the tower of 40 creeps: measured
-	// over 10 s, it falls at 0.78 s in float and moves 5.8 mm in double; with the block (the default)
-	// it does not move (0.00 mm in both). D32 (a support's motion below the convergence speed is
-	// not handed up) hides this failure in the tower, so the ablation turns D32 off as well; without
-	// the block but with D32 the pyramid of base 30 still drifts 3.3 mm and the round tower moves
-	// (docs/design.md, section 4t).
-	harness::SolverSpec without = spec::shock();
-	without.settings.m_diagnostics.m_supportBlocks = false;
-	without.settings.m_diagnostics.m_fixationRestSpeed = false;
-	harness::Trial creeping(without, "tower", {{"n", 40}});
-	harness::Trial standing(spec::shock(), "tower", {{"n", 40}});
-	creeping.run(10.0);
-	standing.run(10.0);
-	EXPECT_GT(creeping.maxDrift(), 0.002) << "m: expected the tower to creep without the support blocks";
-	EXPECT_LT(standing.maxDrift(), 0.0002) << "m";
-}
-
 TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
 {
 	// Before D19 the round tower (320 bricks) held at 10 iterations but moved at 3.0 s at 100
@@ -63,33 +43,6 @@ TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
 	run.run(10.0);
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
 	EXPECT_FALSE(harness::anyNonFinite(run.bodies()));
-}
-
-TEST(SmallLoads, SettledTowerHandsItsWeightDownWithoutReSolves)
-{
-	// D20 (docs/design.md, section 4e): once the tower of 20 has settled, every weight-pass load is
-	// below the convergence speed, so no layer is re-solved (no weight-pass sweeps), yet the loads
-	// still reach the ground through the load transfer: it carries the tower's weight.
-	harness::Trial run(spec::shock(), "tower", {{"n", 20}});
-	run.run(1.0);
-	const btShockPropagationConstraintSolver& solver = *run.simulation().shockSolver();
-	long weightSweeps = 0;
-	for (int i = 0; i < 60; ++i)
-	{
-		run.step();
-		weightSweeps += solver.getStatistics().m_numWeightSweeps;
-	}
-	EXPECT_EQ(weightSweeps, 0);
-	EXPECT_NEAR(run.summary().groundOverWeightLastSecond, 1.0, 0.01);
-	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
-
-	// The same tower re-solving every loaded layer (D20 off) sweeps and stands alike.
-	harness::SolverSpec resolve = spec::shock();
-	resolve.settings.m_diagnostics.m_transferSmallLoads = false;
-	harness::Trial other(resolve, "tower", {{"n", 20}});
-	other.run(2.0);
-	EXPECT_GT(other.simulation().shockSolver()->getStatistics().m_numWeightSweeps, 0);
-	EXPECT_NEAR(other.summary().groundOverWeightLastSecond, 1.0, 0.01);
 }
 
 TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
@@ -131,86 +84,6 @@ TEST(LayerIterationFloor, BenchmarkDemoThousandStackHoldsAtTheAppsFiveIterations
 	run.run(10.0);
 	EXPECT_LT(run.maxDrift(), 0.002) << "m";
 	EXPECT_NEAR(run.summary().groundOverWeightLastSecond, 1.0, 0.01);
-}
-
-TEST(SharedBlockFactor, SettledStacksCarryTheirWeightAsWithTheTransfersOwnFactor)
-{
-	// D24 (docs/design.md, section 4i): the weight pass's load transfer of a body solves with the
-	// factor its support block made of the same rows. It is the same least-norm transfer, so a
-	// settled stack stands and hands its whole weight to the ground with either factor, and the two
-	// runs end where the other does (measured: 0.00 mm apart).
-	for (const char* scene : {"tower", "pyramid"})
-	{
-		using Params = std::vector<std::pair<std::string, double>>;
-		const Params params = std::string(scene) == "tower" ? Params{{"n", 40}} : Params{{"base", 20}};
-		harness::SolverSpec own = spec::shock();
-		own.settings.m_diagnostics.m_sharedBlockFactor = false;
-		harness::Trial shared(spec::shock(), scene, params);
-		harness::Trial separate(own, scene, params);
-		long sharedTransfers = 0, separateShared = 0;
-		for (int i = 0; i < 180; ++i)
-		{
-			shared.step();
-			separate.step();
-			sharedTransfers += shared.simulation().shockSolver()->getStatistics().m_numSharedFactorTransfers;
-			separateShared += separate.simulation().shockSolver()->getStatistics().m_numSharedFactorTransfers;
-		}
-		EXPECT_GT(sharedTransfers, 0) << scene << ": the block's factor was never used";
-		EXPECT_EQ(separateShared, 0) << scene;
-		for (harness::Trial* run : {&shared, &separate})
-		{
-			EXPECT_NEAR(run->summary().groundOverWeightLastSecond, 1.0, 0.01) << scene;
-			EXPECT_LT(run->maxDrift(), 0.001) << scene << ": m";
-		}
-		double apart = 0;
-		for (size_t i = 0; i < shared.bodies().size(); ++i)
-			apart = std::max(apart, double((shared.bodies()[i]->getCenterOfMassPosition() - separate.bodies()[i]->getCenterOfMassPosition()).length()));
-		EXPECT_LT(apart, 0.001) << scene << ": m between the two runs' bodies";
-	}
-}
-
-TEST(WeightPassBlocks, PyramidOfBase80StillStandsWhenSweepsAloneHaveTurnedItApart)
-{
-	// D31 (docs/design.md, section 4s): a weight-pass re-solve ends with its free bodies' support
-	// blocks. Ended on its sweeps alone, PGS's last error (a small spurious turn of each box) is
-	// never restored and grows in tall pyramids: the pyramid of base 80 (3,240 boxes) at 10
-	// iterations moves past 1 cm at 0.87 s in float and 0.92 s in double. With the blocks it is
-	// within 0.1 mm at 1.1 s in both and moves at 4.9 s in float, 1.98 s in double: a delay, not
-	// a cure (section 8).
-	harness::SolverSpec sweepsOnly = spec::shock();
-	sweepsOnly.settings.m_diagnostics.m_weightPassBlocks = false;
-	harness::Trial turning(sweepsOnly, "pyramid", {{"base", 80}});
-	harness::Trial standing(spec::shock(), "pyramid", {{"base", 80}});
-	turning.run(1.1);
-	standing.run(1.1);
-	EXPECT_GT(turning.maxDrift(), harness::kStandingDriftMeters) << "m: expected the pyramid to move without the blocks";
-	EXPECT_LT(standing.maxDrift(), 0.001) << "m";
-	EXPECT_NEAR(standing.summary().groundOverWeightLastSecond, 1.0, 0.01);
-	EXPECT_FALSE(harness::anyNonFinite(standing.bodies()));
-}
-
-TEST(FixationRestSpeed, PyramidOfBase80StandsWhereShowingEverySupportMotionTurnsItApart)
-{
-	// D32 (docs/design.md, section 4t): a fixated support's motion slower than the convergence
-	// speed is the solve's error, and the layer above sees the support at rest. Shown to it, the
-	// error climbs the pyramid and grows: the pyramid of base 80 (3,240 boxes) moves past 1 cm at
-	// 1.87 s at 3 iterations in float, at 1.98 s at 10 in double (4.9 s at 10 in float). With
-	// D32 it stands 10 s at 3-20 iterations in both (within 0.5 mm).
-#ifdef BT_USE_DOUBLE_PRECISION
-	const int iterations = 10;
-#else
-	const int iterations = 3;
-#endif
-	harness::SolverSpec showing = spec::shock(iterations);
-	showing.settings.m_diagnostics.m_fixationRestSpeed = false;
-	harness::Trial turning(showing, "pyramid", {{"base", 80}});
-	harness::Trial standing(spec::shock(iterations), "pyramid", {{"base", 80}});
-	turning.run(2.1);
-	standing.run(2.1);
-	EXPECT_GT(turning.maxDrift(), harness::kStandingDriftMeters) << "m: expected the pyramid to move without D32";
-	EXPECT_LT(standing.maxDrift(), 0.001) << "m";
-	EXPECT_NEAR(standing.summary().groundOverWeightLastSecond, 1.0, 0.01);
-	EXPECT_FALSE(harness::anyNonFinite(standing.bodies()));
 }
 
 TEST(ConvergingPredictor, PitLayersThatCannotConvergeEndEarly)

@@ -32,18 +32,6 @@ TEST(TippingComposites, AColumnOverALedgeTipsAsOneRigidBodyAsDynamicsSays)
 	}
 }
 
-TEST(TippingComposites, WithoutThemTheWeightPassGuardHoldsTheColumnUp)
-{
-	// What D25 is for: the bottom cube alone cannot carry the column's load past the edge, its
-	// re-solve speeds it up beyond its push, and the guard keeps the layer from before the load:
-	// the column stands on a phantom support (measured: 1e-5 rad/s after 0.2 s).
-	harness::SolverSpec without = spec::shock();
-	without.settings.m_diagnostics.m_tippingComposites = false;
-	const truth::LedgeTip run = truth::measureLedgeTip(without, 0.2);
-	EXPECT_EQ(run.tippingComposites, 0);
-	EXPECT_LT(run.fastest, 0.1 * run.expected) << "rad/s: expected the column held up without D25";
-}
-
 TEST(TippingComposites, StandingStacksFormNone)
 {
 	// Statics says these stand: no body's load acts outside its support, so no composite forms and
@@ -127,29 +115,6 @@ TEST(ImpactTipping, ABoxLandingOnAnOverhangTurnsItAsAConvergedSolverDoes)
 		std::printf("leaning column at half height: %.3f s (reference %.3f s)\n", t, expected);
 		EXPECT_NEAR(t, expected, 0.15 * expected) << "s";
 	}
-}
-
-TEST(ImpactTipping, WithoutItTheLandingsAreStoppedFlatAndTheColumnTipsLate)
-{
-	// What D27 is for: without it D25 forms no composite where the landing's momentum acts outside
-	// a support but the part's weight does not, the guard rejects the re-solve of the body under
-	// the hinge, and the landing's momentum is discarded. D29 (a body that slides carries what rests
-	// on it) carries part of that momentum through the landing bodies that slip, so it is off here
-	// too (with D29 alone the column reaches half height at 4.03 s, 8% late; without both 5.08 s).
-	// So is D31 (a weight-pass re-solve ends with its support blocks): in double, with D27 and D29
-	// off but D31 on, the column reaches half height at 3.93 s (8% late; without all three 5.03 s;
-	// in float 5.08 s either way): D31 carries part of the landing's momentum too.
-	// Measured in the solver-only mode: the world's second phase (D4, issue 38) lifts the landings'
-	// penetration at t + dt and recovers most of what D27 is for (with the three off, the world's
-	// column reaches half height at 4.00 s, 7.5% late; solver-only 5.00 s).
-	const double expected = referenceHalfHeightTime();
-	harness::SolverSpec without = spec::shockSolverOnly();
-	without.settings.m_diagnostics.m_impactTipping = false;
-	without.settings.m_diagnostics.m_rigidSlidingComposites = false;
-	without.settings.m_diagnostics.m_weightPassBlocks = false;
-	const double t = leaningColumnHalfHeightTime(without, 8.0);
-	std::printf("leaning column at half height without D27: %.3f s (reference %.3f s)\n", t, expected);
-	EXPECT_GT(t, 1.2 * expected) << "s: expected the column to topple late without D27";
 }
 
 TEST(TippingComposites, AJointedBodyIsLeftOutWhetherOrNotItsJointDisablesCollisions)

@@ -283,17 +283,16 @@ struct btShockPropagationDiagnostics
 	/// off in the app stays off.
 	btScalar m_warmStartFactor = btScalar(1);
 
-	/// Opt-in, work in progress (the converging-solver issue; docs/design.md, section 4u): solve
-	/// stacked groups with the converging step instead of the layered passes: Bullet's setup with
-	/// every row from zero (a row past the fixation limit warm, as stock starts it), the
+	/// The velocity step of stacked groups (docs/design.md, section 4u): Bullet's setup with every
+	/// row from zero (a row past the fixation limit warm, as stock starts it), the
 	/// shock-propagation predictor (btShockPredictor: fixated up pass, weight-feeling down pass,
 	/// every withheld impulse delivered, each cycle line searched on its kinetic energy), Bullet's
 	/// own sweeps as the corrector (ceil(f N), ended once converged), Bullet's finish, the layered
-	/// position correction. Momentum is conserved by construction and it holds the 26 truths at 5,
-	/// 10 and 20 iterations, but the round tower on a frictionless ground collapses under it, and
-	/// in piles it costs more than the default step (the pit of 100 cubes about 10x stock), so it
-	/// is off.
-	bool m_convergingStep = false;
+	/// position correction. Momentum is conserved by construction; it holds the 26 truths at 5,
+	/// 10 and 20 iterations. On (the default); off selects the layered passes of sections 4a-4t,
+	/// which are being removed (the converging-solver issue). In piles it costs more than the
+	/// layered passes did (the pit of 100 cubes about 10x stock against their 3.5x).
+	bool m_convergingStep = true;
 
 	/// The converging step's predictor: a layer ends once a sweep moves no row's bodies by more
 	/// than this share of |g| dt along the row (unitless; 6e-6 = 1 micrometre/s at 9.81 m/s^2 and
