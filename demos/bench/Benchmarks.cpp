@@ -7,7 +7,7 @@
 //                            the settled state over those 5 s), pen_mm (deepest contact at the end),
 //                            bodies, iterations, and per step: coll_ms (Bullet's collision detection,
 //                            every call) and, for the plugin, its phases from btShockPropagationStatistics
-//                            (graph_ms, global_ms, layers_ms, wf_ms, corr_ms). Accuracy next to time: a
+//                            (graph_ms, setup_ms, predictor_ms, corrector_ms, corr_ms). Accuracy next to time: a
 //                            fast configuration that lets the scene fall shows it here.
 // Filter with --benchmark_filter, e.g. 'Step/wall/'.
 //
@@ -96,8 +96,8 @@ struct PhaseSums
 {
 	int steps = 0;
 	double total = 0;  ///< the whole step (ratio mode only; Google Benchmark times Step itself)
-	double collision = 0, graph = 0, setup = 0, global = 0, layers = 0, weightFeeling = 0, correction = 0;
-	double globalSweeps = 0, layerSweeps = 0, weightSweeps = 0;  ///< PGS sweeps of each pass (counts, summed over the step's groups)
+	double collision = 0, graph = 0, setup = 0, global = 0, layers = 0, correction = 0;
+	double globalSweeps = 0, layerSweeps = 0;  ///< corrector sweeps, predictor sweeps (statistics, summed over the step's groups)
 
 	/// Adds the last step of `sim` (its statistics describe that step).
 	void add(harness::Simulation& sim)
@@ -111,11 +111,9 @@ struct PhaseSums
 			setup += st.m_timeSetupMs;
 			global += st.m_timeGlobalDynamicsMs;
 			layers += st.m_timeLayersMs;
-			weightFeeling += st.m_timeWeightFeelingMs;
 			correction += st.m_timeCorrectionMs;
 			globalSweeps += st.m_numGlobalSweeps;
 			layerSweeps += st.m_numLayerSweeps;
-			weightSweeps += st.m_numWeightSweeps;
 		}
 	}
 	double perStep(double sum) const { return steps > 0 ? sum / steps : 0; }
@@ -198,9 +196,8 @@ void step(benchmark::State& state, const std::string& scene, const std::string& 
 	{
 		state.counters["graph_ms"] = phases.perStep(phases.graph);
 		state.counters["setup_ms"] = phases.perStep(phases.setup);
-		state.counters["global_ms"] = phases.perStep(phases.global);
-		state.counters["layers_ms"] = phases.perStep(phases.layers);
-		state.counters["wf_ms"] = phases.perStep(phases.weightFeeling);
+		state.counters["predictor_ms"] = phases.perStep(phases.layers);
+		state.counters["corrector_ms"] = phases.perStep(phases.global);
 		state.counters["corr_ms"] = phases.perStep(phases.correction);
 	}
 }
@@ -313,8 +310,8 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 					sps / si, fixed(r.siDrift * 100, 1).c_str(), fixed(r.spDrift * 100, 1).c_str(), fixed(r.spSolverDrift * 100, 1).c_str());
 	}
 	std::printf("\nper-phase ms per step (coll: Bullet's collision detection, every call; the rest from btShockPropagationStatistics)\n");
-	std::printf("%-24s %-10s %8s %8s %8s %8s %8s %8s %8s %8s   %s\n", "scene", "solver", "step", "coll", "graph", "setup", "global", "layers", "wf", "corr",
-				"sweeps per step global / layers / wf");
+	std::printf("%-24s %-10s %8s %8s %8s %8s %9s %9s %8s   %s\n", "scene", "solver", "step", "coll", "graph", "setup", "predictor", "corrector", "corr",
+				"sweeps per step predictor / corrector");
 	for (const RatioRow& r : rows)
 	{
 		const PhaseSums* sums[3] = {&r.si, &r.sp, &r.spSolver};
@@ -323,11 +320,11 @@ void printRatios(const std::vector<RatioRow>& rows, const RatioOptions& o)
 		{
 			const PhaseSums& p = *sums[k];
 			if (k == 0)
-				std::printf("%-24s %-10s %8.3f %8.3f %8s %8s %8s %8s %8s %8s\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision), "-", "-", "-", "-", "-", "-");
+				std::printf("%-24s %-10s %8.3f %8.3f %8s %8s %9s %9s %8s\n", r.label.c_str(), names[k], p.perStep(p.total), p.perStep(p.collision), "-", "-", "-", "-", "-");
 			else
-				std::printf("%-24s %-10s %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f   %.1f / %.1f / %.1f\n", r.label.c_str(), names[k], p.perStep(p.total),
-							p.perStep(p.collision), p.perStep(p.graph), p.perStep(p.setup), p.perStep(p.global), p.perStep(p.layers), p.perStep(p.weightFeeling),
-							p.perStep(p.correction), p.perStep(p.globalSweeps), p.perStep(p.layerSweeps), p.perStep(p.weightSweeps));
+				std::printf("%-24s %-10s %8.3f %8.3f %8.3f %8.3f %9.3f %9.3f %8.3f   %.1f / %.1f\n", r.label.c_str(), names[k], p.perStep(p.total),
+							p.perStep(p.collision), p.perStep(p.graph), p.perStep(p.setup), p.perStep(p.layers), p.perStep(p.global),
+							p.perStep(p.correction), p.perStep(p.layerSweeps), p.perStep(p.globalSweeps));
 		}
 	}
 	std::fflush(stdout);

@@ -202,9 +202,8 @@ PHASES = [
     ("collision_ms", "collision detection (both CDs)", "#bdbdbd"),
     ("graph_ms", "contact graph + layers", "#e41a1c"),
     ("setup_ms", "Bullet's row setup (once per step)", "#fb9a99"),
-    ("global_ms", "global pass (ceil(f N) sweeps at most)", "#377eb8"),
-    ("layers_ms", "layer passes (up)", "#4daf4a"),
-    ("weight_ms", "weight pass (down)", "#a6d854"),
+    ("predictor_ms", "predictor (shock propagation)", "#4daf4a"),
+    ("corrector_ms", "corrector (ceil(f N) sweeps at most)", "#377eb8"),
     ("correction_ms", "finish and position correction", "#984ea3"),
     ("other_ms", "other (islands, integration)", "#ff7f00"),
 ]

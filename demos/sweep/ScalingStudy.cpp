@@ -14,7 +14,7 @@ namespace
 /// Milliseconds per measured step, split by phase (plugin: its statistics; all: collision detection).
 struct Phases
 {
-	double total = 0, collision = 0, graph = 0, setup = 0, global = 0, layers = 0, weight = 0, correction = 0;
+	double total = 0, collision = 0, graph = 0, setup = 0, global = 0, layers = 0, correction = 0;
 	void add(harness::Simulation& sim, double stepMs)
 	{
 		total += stepMs;
@@ -26,7 +26,6 @@ struct Phases
 			setup += st.m_timeSetupMs;
 			global += st.m_timeGlobalDynamicsMs;
 			layers += st.m_timeLayersMs;
-			weight += st.m_timeWeightFeelingMs;
 			correction += st.m_timeCorrectionMs;  // finish and position correction
 		}
 	}
@@ -71,19 +70,18 @@ void runScaling(const ScalingOptions& o, ResultTable& out, std::vector<std::pair
 			out.add("collision_ms", p.collision / n);
 			out.add("graph_ms", p.graph / n);
 			out.add("setup_ms", p.setup / n);
-			out.add("global_ms", p.global / n);
-			out.add("layers_ms", p.layers / n);
-			out.add("weight_ms", p.weight / n);
+			out.add("predictor_ms", p.layers / n);
+			out.add("corrector_ms", p.global / n);
 			out.add("correction_ms", p.correction / n);
-			out.add("other_ms", (p.total - p.collision - p.graph - p.setup - p.global - p.layers - p.weight - p.correction) / n);
+			out.add("other_ms", (p.total - p.collision - p.graph - p.setup - p.global - p.layers - p.correction) / n);
 			std::fprintf(stderr, "scaling: base %3d %-10s %8.2f ms/step\n", base, variants[i].label.c_str(), p.total / n);
 		}
 	}
 	notes.push_back({"rule", "pyramids in lockstep per base, " + std::to_string(o.warmupSteps) + " untimed steps then " +
 								 std::to_string(o.measuredSteps) + " timed ones, " + std::to_string(o.iterations) +
 								 " iterations; collision_ms: every collision detection of the step; graph_ms: contact graph and stack "
-								 "layers; setup_ms: Bullet's row setup (once per step), rows into layers, the warm-start split; global_ms, "
-								 "layers_ms, weight_ms: the global pass, the layer passes (up) and the weight pass (down); correction_ms: "
+								 "layers; setup_ms: Bullet's row setup (once per step), rows into layers; predictor_ms: shock propagation "
+								 "(up and down passes, cycles); corrector_ms: Bullet's sweeps after it; correction_ms: "
 								 "finish and position correction; other_ms: the rest (islands, integration, bookkeeping)"});
 	notes.push_back({"scaling_seconds", std::to_string(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count())});
 }

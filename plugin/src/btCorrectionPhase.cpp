@@ -74,7 +74,7 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 	if (m_correction->getNumPoints() == 0) return false;
 	// The converging step fixates a row's lower body only up to the predictor's limit on s
 	// (btShockPredictor::maxFixationScale); its positions follow the same rule.
-	const btScalar maxScale = m_settings.m_diagnostics.m_convergingStep ? btShockPredictor::maxFixationScale() : btScalar(BT_LARGE_FLOAT);
+	const btScalar maxScale = btShockPredictor::maxFixationScale();
 	m_correction->solve(sweeps, layered ? &m_layers : 0, maxScale);
 	m_correction->apply();
 	return true;

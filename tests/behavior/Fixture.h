@@ -45,14 +45,6 @@ inline harness::SolverSpec weightFeeling(int iterations = 10, double f = btShock
 	return s;
 }
 
-/// The plugin's converging step (opt-in, docs/design.md section 4u), world mode.
-inline harness::SolverSpec converging(int iterations = 10)
-{
-	harness::SolverSpec s = shock(iterations);
-	s.settings.m_diagnostics.m_convergingStep = true;
-	return s;
-}
-
 /// The plugin in either mode (ShockWorld or ShockSolverOnly) with its default settings.
 inline harness::SolverSpec plugin(harness::SolverKind kind)
 {

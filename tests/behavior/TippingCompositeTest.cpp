@@ -32,28 +32,6 @@ TEST(TippingComposites, AColumnOverALedgeTipsAsOneRigidBodyAsDynamicsSays)
 	}
 }
 
-TEST(TippingComposites, StandingStacksFormNone)
-{
-	// Statics says these stand: no body's load acts outside its support, so no composite forms and
-	// the step is the one before D25. No support friction is at its bound either, so no D29
-	// composite forms (they are counted among these); the same without D29.
-	harness::SolverSpec withoutRigidSliding = spec::shock();
-	withoutRigidSliding.settings.m_diagnostics.m_rigidSlidingComposites = false;
-	for (const harness::SolverSpec& solver : {spec::shock(), withoutRigidSliding})
-		for (const std::string& scene : {std::string("tower"), std::string("pyramid")})
-		{
-			harness::Trial run(solver, scene, {{scene == "tower" ? "n" : "base", scene == "tower" ? 20.0 : 10.0}});
-			int composites = 0;
-			for (int i = 0; i < 120; ++i)
-			{
-				run.step();
-				composites += run.simulation().shockSolver()->getStatistics().m_numTippingComposites;
-			}
-			EXPECT_EQ(composites, 0) << scene;
-			EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters) << scene;
-		}
-}
-
 TEST(RejectPerIsland, StaircaseColumnsBatchedInOneSolveAllTopple)
 {
 	// D26 (docs/design.md, section 4k): Bullet solves its small islands in one batch, so a layer of

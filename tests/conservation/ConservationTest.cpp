@@ -1,15 +1,13 @@
-// Conservation specs of the converging step (opt-in: btShockPropagationDiagnostics::m_convergingStep,
-// docs/design.md section 4u), built as an app builds its world (Bullet's defaults, 60 Hz, 10
+// Conservation specs of the plugin's velocity step (docs/design.md), built as an app builds its world (Bullet's defaults, 60 Hz, 10
 // iterations, sleeping off), world and solver-only mode.
 //
 // On a frictionless static floor nothing acts on a stack horizontally but its own contacts, so its
 // horizontal momentum and its angular momentum about the vertical must stay at their start values;
-// the bound is 1e-6 of m g t (round-off). Modes: stock SI, the default step (printed only), the
-// converging step in world and solver-only mode, and its classic order (no weight feeling). Expected values come from physics, and stock Bullet runs
-// in the same test where the claim is "no worse than stock". Each test prints one line
-//   CONSERVATION | <case> | stock ... | world ... | solver ...
-// before it asserts, with the default step's figures beside them (not asserted: it does not
-// conserve; docs/design.md section 4u).
+// the bound is 1e-6 of m g t (round-off). Modes: stock SI, the plugin in world and solver-only
+// mode, and its classic order (no weight feeling). Expected values come from physics, and stock
+// Bullet runs in the same test where the claim is "no worse than stock". Each test prints one line
+//   CONSERVATION | <case> | stock ... | world ... | solver ... | classic ...
+// before it asserts.
 
 #include <BulletShockPropagation/btShockPropagationCommon.h>
 #include <btBulletDynamicsCommon.h>
@@ -28,13 +26,12 @@ namespace
 enum class Mode
 {
 	Stock,
-	DefaultWorld,
 	World,
 	Solver,
-	Classic  ///< the converging step without weight feeling (Erleben's classic order), world mode
+	Classic  ///< the plugin without weight feeling (Erleben's classic order), world mode
 };
-const int kNumModes = 5;
-const char* kModeNames[] = {"stock", "default", "world", "solver", "classic"};
+const int kNumModes = 4;
+const char* kModeNames[] = {"stock", "world", "solver", "classic"};
 const btScalar kDt = btScalar(1) / btScalar(60);
 const btScalar kG = btScalar(9.81);
 
@@ -58,7 +55,6 @@ struct Column
 	Column(Mode mode, const std::vector<btScalar>& masses, btScalar floorMu, btScalar v0)
 	{
 		btShockPropagationSettings settings;
-		settings.m_diagnostics.m_convergingStep = mode != Mode::DefaultWorld;
 		settings.m_weightFeeling = mode != Mode::Classic;
 		if (mode == Mode::Stock)
 			solver.reset(new btSequentialImpulseConstraintSolver);
@@ -250,7 +246,7 @@ TEST(Conservation, CoastingColumnOnIceCoastsAsOne)
 }
 
 // BenchmarkDemo's 1000:1 column (three 1 kg boxes under a 1000 kg one) on ice, which is in
-// equilibrium: the converging step keeps its horizontal momentum and it stands (every box within
+// equilibrium: the plugin keeps its horizontal momentum and it stands (every box within
 // 1 cm, kinetic energy at most m_top g times one 10 micrometre rest overlap). Stock SI and the
 // classic order crush it; their crushed boxes sink into the floor box and meet its sides, whose
 // horizontal normals turn them about the vertical, so for them only the linear momentum is a law.
@@ -304,7 +300,7 @@ EnergyExcess measureEnergyExcess(const std::vector<btScalar>& masses, const char
 
 // A 1e5 kg box on a 1 kg box on the floor: the row between them has s = 1e5 + 1, beyond the
 // predictor's fixation limit in float (1 / sqrt(epsilon) = 2.9e3; btShockPredictor.h), so the
-// converging step solves it with both bodies free, as Bullet does, and in float the heavy box sinks
+// plugin solves it with both bodies free, as Bullet does, and in float the heavy box sinks
 // through (stock SI too; in double the limit is 6.7e7, the row is fixated and the pair stands).
 // Gravity is the only source of energy: the kinetic energy may never
 // exceed the potential energy given up. Before the position correction followed the velocity

@@ -81,17 +81,17 @@ harness::PluginFlags pluginFlags(std::vector<std::string> args)
 TEST(CommandLine, PluginFlagsSetSettingsAndExpandEveryCombination)
 {
 	const std::vector<btShockPropagationSettings> all =
-		pluginFlags({"--f", "0,0.25", "--fixation", "keep", "--slop", "0,0.001,0.002", "--bfs-layers"}).expand();
+		pluginFlags({"--f", "0,0.25", "--app-friction", "--slop", "0,0.001,0.002", "--bfs-layers"}).expand();
 	ASSERT_EQ(all.size(), 6u);
 	EXPECT_EQ(all[0].m_weighting, btScalar(0));
 	EXPECT_EQ(all[5].m_weighting, btScalar(0.25));
 	EXPECT_EQ(all[5].m_correctionSlop, btScalar(0.002));
 	for (const btShockPropagationSettings& s : all)
 	{
-		EXPECT_EQ(s.m_fixationMode, BT_FIXATION_KEEP_VELOCITY);
+		EXPECT_FALSE(s.m_diagnostics.m_twoFrictionDirections);
 		EXPECT_FALSE(s.m_diagnostics.m_supportOrdering);
 	}
-	EXPECT_EQ(harness::pluginSettingsLabel(all[1]), " f=0 fix=keep slop=0.001 bfs");
+	EXPECT_EQ(harness::pluginSettingsLabel(all[1]), " f=0 slop=0.001 bfs appfriction");
 	EXPECT_EQ(harness::pluginSettingsLabel(btShockPropagationSettings()), " f=0.5") << "defaults: f only";
 	EXPECT_EQ(pluginFlags({}).expand().size(), 1u) << "no flag: the base settings alone";
 }
@@ -99,7 +99,6 @@ TEST(CommandLine, PluginFlagsSetSettingsAndExpandEveryCombination)
 TEST(CommandLine, PluginFlagsRefuseBadValues)
 {
 	EXPECT_NE(refusal([] { pluginFlags({"--f", "1.5"}); }).find("'1.5'"), std::string::npos);
-	EXPECT_NE(refusal([] { pluginFlags({"--fixation", "tilt"}); }).find("'tilt'"), std::string::npos);
-	EXPECT_NE(refusal([] { pluginFlags({"--weight-sweeps", "2.5"}); }).find("'2.5'"), std::string::npos);
+	EXPECT_NE(refusal([] { pluginFlags({"--predictor-sweeps", "2.5"}); }).find("'2.5'"), std::string::npos);
 	EXPECT_NE(refusal([] { pluginFlags({"--slop"}); }).find("missing value"), std::string::npos);
 }

@@ -123,77 +123,24 @@ PluginFlag numberFlag(const char* flag, const char* value, const char* help, Fie
 			}};
 }
 
-const char* const kFixationNames[] = {"keep", "zero", "linear", "twist"};  // by btShockPropagationFixationMode
-
 /// The table: a plugin setting's flag is one entry here.
 const std::vector<PluginFlag>& pluginFlags()
 {
 	static const std::vector<PluginFlag> table = {
-		numberFlag("--f", "F,G,...", "plugin weighting values f in [0,1] (default 0.5; D2)", field(&btShockPropagationSettings::m_weighting), "f",
+		numberFlag("--f", "F,G,...", "plugin weighting values f in [0,1]: the corrector runs ceil(f N) sweeps (default 0.5)", field(&btShockPropagationSettings::m_weighting), "f",
 				   [](double f) { return f >= 0 && f <= 1; }, "in [0, 1]", true),
-		{"--fixation", "MODE,...", "plugin fixation: twist (default), linear, keep, zero (D1)", false,
-		 [](btShockPropagationSettings& s, const std::string& text) {
-			 for (int m = 0; m < 4; ++m)
-				 if (text == kFixationNames[m])
-				 {
-					 s.m_fixationMode = btShockPropagationFixationMode(m);
-					 return;
-				 }
-			 throw std::invalid_argument("unknown fixation mode '" + text + "'; valid: twist, linear, keep, zero");
-		 },
-		 [](const btShockPropagationSettings& s) { return std::string("fix=") + kFixationNames[s.m_fixationMode]; }},
 		switchFlag("--global-correction", "plugin: the paper's un-layered second correction (D4)",
 				   diagnostic(&btShockPropagationDiagnostics::m_layeredSecondCorrection), false, "globalcorr"),
 		numberFlag("--slop", "M,N,...", "plugin: correction slop values in metres (default: 0.18 g dt^2; D6)",
 				   field(&btShockPropagationSettings::m_correctionSlop), "slop", [](double m) { return m >= 0 || m == -1; }, ">= 0 metres"),
 		switchFlag("--bfs-layers", "plugin: plain BFS layers, no support ordering (D12 off)", diagnostic(&btShockPropagationDiagnostics::m_supportOrdering),
 				   false, "bfs"),
-		numberFlag("--weight-sweeps", "N,...", "plugin: most sweeps per layer of the weight pass (default: 3 x the app's iterations; D16)",
-				   field(&btShockPropagationSettings::m_weightIterations), "sweeps", [](double n) { return n >= 1; }, ">= 1"),
-		switchFlag("--no-transfer", "plugin: no load transfer before the weight pass's sweeps (D16 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_loadTransfer), false, "notransfer"),
-		numberFlag("--warm-factor", "W,...", "plugin: warm-start factor of stacked groups, -1 = the app's (default 1; D16)",
-				   diagnostic(&btShockPropagationDiagnostics::m_warmStartFactor), "warm", [](double w) { return (w >= 0 && w <= 1) || w == -1; }, "in [0, 1] or -1"),
-		numberFlag("--tip-gain", "G,...", "plugin: weight-pass guard, steps of free fall a converged re-solve may add (default 3; D16)",
-				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipping), "tip", [](double g) { return g >= 0; }, ">= 0"),
-		numberFlag("--guard-slack", "S,...", "plugin: weight-pass guard slack, share of |g| dt (default 0.1; D16)",
-				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardSlack), "slack", [](double g) { return g >= 0; }, ">= 0"),
 		switchFlag("--app-friction", "plugin: stacked groups keep the app's friction rows (one per point by default) instead of two (D7)",
 				   diagnostic(&btShockPropagationDiagnostics::m_twoFrictionDirections), false, "appfriction"),
-		numberFlag("--weight-convergence", "C,...", "plugin: a weight-pass layer stops sweeping once no row's velocity changes by more than C |g| dt (default 0.006; D16)",
+		numberFlag("--weight-convergence", "C,...", "plugin: the corrector's sweeps end once none changes a row's velocity by more than C |g| dt (default 0.006)",
 				   diagnostic(&btShockPropagationDiagnostics::m_weightConvergence), "wconv", [](double c) { return c >= 0; }, ">= 0"),
-		numberFlag("--tip-margin", "M,...", "plugin: weight-pass guard, share of the support's size a load must act outside of to tip a body (default 0; D16)",
-				   diagnostic(&btShockPropagationDiagnostics::m_weightGuardTipMargin), "tipmargin", [](double m) { return m >= 0; }, ">= 0"),
-		switchFlag("--no-support-blocks", "plugin: no support block solve before a layer's sweeps (D19 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_supportBlocks), false, "noblocks"),
-		switchFlag("--no-weight-blocks", "plugin: a weight-pass re-solve ends after its sweeps, without its support blocks (D31 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_weightPassBlocks), false, "noweightblocks"),
-		switchFlag("--no-fixation-rest-speed", "plugin: a fixated support shows the layer above even motion slower than the convergence speed (D32 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_fixationRestSpeed), false, "norestspeed"),
-		switchFlag("--own-transfer-factor", "plugin: the load transfer factors its own normal equations instead of using the support block's (D24 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_sharedBlockFactor), false, "ownfactor"),
-		numberFlag("--layer-min-sweeps", "N,...", "plugin: fewest sweeps per layer before a converged layer ends, -1 = always the app's N (default 2; D19)",
-				   field(&btShockPropagationSettings::m_layerMinIterations), "minsweeps", [](double n) { return n >= 1 || n == -1; }, ">= 1 or -1"),
-		numberFlag("--layer-floor", "N,...", "plugin: a layer may sweep at most max(the app's N, N) times before it is cut off unconverged, 0 = the app's N (default 10; D22)",
-				   field(&btShockPropagationSettings::m_layerIterationFloor), "floor", [](double n) { return n >= 0; }, ">= 0"),
-		switchFlag("--resolve-small-loads", "plugin: re-solve every loaded weight-pass layer, even below the convergence speed (D20 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_transferSmallLoads), false, "resolvesmall"),
-		switchFlag("--full-global-pass", "plugin: the global pass always runs ceil(f N) sweeps, even once converged (D21 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_convergedGlobalPass), false, "fullglobal"),
-		switchFlag("--reject-whole-layer", "plugin: a rejected weight-pass re-solve restores every free body of its layer (D26 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_rejectPerIsland), false, "wholelayer"),
-		switchFlag("--no-tipping-composites", "plugin: a body statics says tips is judged alone by the weight-pass guard (D25 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_tippingComposites), false, "notipping"),
-		switchFlag("--no-impact-tipping", "plugin: an impact tips a composite only where its weight would too (D27 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_impactTipping), false, "noimpact"),
-		switchFlag("--guard-linear-only", "plugin: the weight-pass guard judges an unconverged re-solve by the centre-of-mass speed only, not its spin (D28 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_guardSpin), false, "guardlinear"),
-		switchFlag("--no-rigid-sliding", "plugin: a body that slides is re-solved alone, not with what rests on it as one rigid body (D29 off)",
-				   diagnostic(&btShockPropagationDiagnostics::m_rigidSlidingComposites), false, "norigidslide"),
 		switchFlag("--no-box-face-corners", "plugin: a box face resting on a box gets only the points Bullet's box-box test reports (D30 off)",
 				   field(&btShockPropagationSettings::m_keepBoxFaceCorners), false, "nocorners"),
-		switchFlag("--composites", "plugin: a sliding base carries the inertia of what rests on it (D23, opt-in)",
-				   diagnostic(&btShockPropagationDiagnostics::m_slidingComposites), true, "composites"),
 		switchFlag("--second-correction", "plugin: the world's second phase, detection at t + dt and correction (D4; the default since issue 38)",
 				   field(&btShockPropagationSettings::m_secondCorrection), true, "secondcorr"),
 		switchFlag("--no-second-phase", "plugin: no second phase after the positions advance (D4 off: the world steps as the solver-only mode)",
@@ -202,13 +149,11 @@ const std::vector<PluginFlag>& pluginFlags()
 				   diagnostic(&btShockPropagationDiagnostics::m_secondDetectionAllPairs), true, "allpairs2"),
 		switchFlag("--second-depth-refresh", "plugin: the second correction at the step's own points, depths refreshed, no detection at t + dt (before issue 38)",
 				   diagnostic(&btShockPropagationDiagnostics::m_secondDetection), false, "refresh2"),
-		switchFlag("--converging", "plugin: the converging step (predictor, corrector; opt-in, work in progress; docs/design.md section 4u)",
-				   diagnostic(&btShockPropagationDiagnostics::m_convergingStep), true, "converging"),
-		numberFlag("--predictor-convergence", "C,...", "plugin: the converging step's predictor ends a layer once a sweep moves no row by more than C |g| dt (default 6e-6; section 4u)",
+		numberFlag("--predictor-convergence", "C,...", "plugin: the predictor ends a layer visit once a sweep moves no row by more than C |g| dt (default 6e-6)",
 				   diagnostic(&btShockPropagationDiagnostics::m_predictorConvergence), "pconv", [](double c) { return c >= 0; }, ">= 0"),
-		numberFlag("--predictor-sweeps", "N,...", "plugin: most sweeps per layer and pass of the converging step's predictor (default 200; section 4u)",
+		numberFlag("--predictor-sweeps", "N,...", "plugin: most sweeps per layer visit of the predictor (default 200)",
 				   diagnostic(&btShockPropagationDiagnostics::m_predictorIterations), "psweeps", [](double n) { return n >= 0; }, ">= 0"),
-		numberFlag("--predictor-cycles", "N,...", "plugin: most up-and-down cycles of the converging step's predictor (default 3; section 4u)",
+		numberFlag("--predictor-cycles", "N,...", "plugin: most up-and-down cycles of the predictor (default 4)",
 				   diagnostic(&btShockPropagationDiagnostics::m_predictorCycles), "pcycles", [](double n) { return n >= 1; }, ">= 1"),
 	};
 	return table;

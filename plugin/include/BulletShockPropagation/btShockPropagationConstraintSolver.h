@@ -24,7 +24,6 @@ subject to the following restrictions:
 #include "btShockPropagationStatistics.h"
 #include "btStackLayers.h"
 
-class btLayeredPasses;
 class btPositionCorrection;
 class btShockPredictor;
 class btShockPropagationDynamicsWorld;
@@ -119,7 +118,6 @@ private:
 	void solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void startFromOwnImpulses();
 	void markPointsFelt();
-	void solveLayered(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	// The converging step (opt-in, btShockPropagationDiagnostics::m_convergingStep), its stages in order.
 	void solveConverging(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	btContactSolverInfo setupRows(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
@@ -129,7 +127,6 @@ private:
 	void markPointsSolved();
 	void assignRowsToLayers();
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
-	void limitWarmStart(const btContactSolverInfo& info);
 	/// Position correction of the group's contacts; fresh: depths from the current transforms;
 	/// fraction of each depth removed (negative: m_diagnostics.m_correctionFraction). Returns
 	/// whether any point was deeper than the slop.
@@ -152,7 +149,6 @@ private:
 	btAlignedObjectArray<int> m_keptEdges;
 	btContactGraph m_graph;
 	btStackLayers m_layers;
-	btLayeredPasses* m_passes;
 	btPositionCorrection* m_correction;
 	btShockPredictor* m_predictor;
 	btAlignedObjectArray<int> m_heightOfSolverBody;  // converging step: stack height of each solver body

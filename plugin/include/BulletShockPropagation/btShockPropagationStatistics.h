@@ -25,23 +25,16 @@ struct btShockPropagationStatistics
 	int m_numFixatedBodies = 0;   ///< body fixations over all layers (a body is fixated at most once)
 	int m_numLayeredGroups = 0;   ///< groups solved layer by layer (the others had no stacks)
 	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (docs/design.md, section 12)
-	int m_numGlobalSweeps = 0;    ///< PGS sweeps of the global pass (D21: it ends once converged)
-	int m_numLayerSweeps = 0;     ///< PGS sweeps of the layer passes, over all layers (D19: they end once converged)
-	int m_numWeightSweeps = 0;    ///< PGS sweeps of the weight pass, over all its layers (D13)
-	int m_numWeightRejections = 0;///< weight-pass layers that could not carry their load (D13 guard)
-	int m_numSlidingComposites = 0;///< sliding bases that carried what rests on them (D23)
-	int m_numSharedFactorTransfers = 0;///< load transfers solved with their support block's factor (D24)
-	int m_numTippingComposites = 0;///< bodies that tipped (D25) or slid (D29) with what rests on them as one rigid body
-	int m_numRigidSlidingComposites = 0;///< of those, bodies that slid with what rests on them (D29)
+	int m_numGlobalSweeps = 0;    ///< corrector sweeps (Bullet's own, every body free; they end once converged)
+	int m_numLayerSweeps = 0;     ///< predictor sweeps: per cycle, the most any layer visit ran
 	int m_numBoxFaceCorners = 0;  ///< contact points added where a box face rested on a box (D30)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).
 	double m_timeGraphMs = 0;            ///< contact graph and stack layers
-	double m_timeSetupMs = 0;            ///< Bullet's row setup (once per step), rows into layers, the warm-start split (D5)
-	double m_timeGlobalDynamicsMs = 0;   ///< global pass (and Bullet's own solve of groups without stacks)
-	double m_timeLayersMs = 0;           ///< layer passes, bottom-up
-	double m_timeWeightFeelingMs = 0;    ///< top-down pass of the weight-feeling mode (D13)
+	double m_timeSetupMs = 0;            ///< Bullet's row setup (once per step), rows into layers
+	double m_timeGlobalDynamicsMs = 0;   ///< corrector sweeps (and Bullet's own solve of groups without stacks)
+	double m_timeLayersMs = 0;           ///< predictor (shock propagation: up and down passes, cycles)
 	double m_timeCollisionMs = 0;        ///< always 0: the second correction runs no narrowphase (D4)
 	double m_timeCorrectionMs = 0;       ///< finish, position correction at CD(t) and the second correction
 };

@@ -42,7 +42,6 @@ struct LedgeTip
 	double slowest = 0, fastest = 0, mean = 0;  ///< rad/s, the cubes' turning rates towards the drop
 	double expected = 0;                        ///< rad/s, alpha t of rigid-body dynamics
 	double kinetic = 0, released = 0;           ///< J: kinetic energy, potential energy given up
-	int tippingComposites = 0;                  ///< the plugin's D25 statistic, summed over the steps
 	bool nonFinite = false;
 	double msPerStep = 0;
 };
