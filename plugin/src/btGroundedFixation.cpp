@@ -36,8 +36,8 @@ subject to the following restrictions:
 //             welded to it (btWeldedComposites.cpp).
 //   precision s is the free body's mass over the fixated one's along the row, plus one; the
 //             fixated body's velocity carries s times the load until its supports take it back,
-//             so the rounding of that cancellation grows with s. Rows with s > 1 / sqrt(epsilon)
-//             (2.9e3 in float, 6.7e7 in double) are solved with both bodies free (addRow).
+//             so what the free body's visit left reaches it multiplied by s. Rows with
+//             s > 2.9e3 (maxFixationScale, both precisions) are solved with both bodies free (addRow).
 
 #include "btShockPredictor.h"
 

@@ -58,9 +58,9 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 		const btScalar scale = fixationScale(freeTerm, total);
 		// s is the free body's mass over the fixated one's along the row, plus one: the fixated
 		// body's velocity carries s times the free one's change until its own supports take it
-		// back, so the rounding of that cancellation grows with s. Up to 1 / sqrt(epsilon) (2.9e3
-		// in float, 6.7e7 in double) it stays below sqrt(epsilon) of the load; beyond, the row is
-		// solved with both bodies free, as Bullet does.
+		// back, so what the free body's visit left reaches it multiplied by s. Up to 2.9e3
+		// (maxFixationScale, both precisions) that stays small; beyond, the row is solved with
+		// both bodies free, as Bullet does.
 		if (scale <= maxFixationScale())
 		{
 			r.m_fixed = fixA ? 1 : 2;

@@ -299,9 +299,8 @@ EnergyExcess measureEnergyExcess(const std::vector<btScalar>& masses, const char
 }
 
 // A 1e5 kg box on a 1 kg box on the floor: the row between them has s = 1e5 + 1, beyond the
-// predictor's fixation limit in float (1 / sqrt(epsilon) = 2.9e3; btShockPredictor.h), so the
-// plugin solves it with both bodies free, as Bullet does, and in float the heavy box sinks
-// through (stock SI too; in double the limit is 6.7e7, the row is fixated and the pair stands).
+// predictor's fixation limit (2.9e3 in both precisions; btShockPredictor.h), so the plugin
+// solves it with both bodies free, as Bullet does, and the heavy box sinks through (stock SI too).
 // Gravity is the only source of energy: the kinetic energy may never
 // exceed the potential energy given up. Before the position correction followed the velocity
 // step's rule, it held the heavy box up by its position while the row let its velocity fall:

@@ -30,10 +30,10 @@
 // 1e-3 kg body thrown at 1 km/s is 500 J, invisible next to a 1e6 kg body's budget).
 //
 // Count and finiteness must hold for every seed. The budget or the cap is exceeded today in
-// about 1% of seeds (1,000 seeds, float: 11 in the world mode, 9 solver-only; before the one-setup
-// step 14 and 16; docs/design.md, section 12, "Behaviour on bad input"). Stock Bullet
-// exceeds the same bounds in 0.9% of the same worlds without poison (it spreads NaN when
-// poisoned), and the last test checks that the plugin does not do so much more often. The test
+// 1.3-1.6% of seeds (1,000 seeds, world / solver-only: 13 / 15 in float, 16 / 16 in double;
+// docs/design.md, sections 10 and 12). Stock Bullet exceeds the same bounds in 0.7-0.9% of the
+// same worlds without poison (it spreads NaN when poisoned), and the comparison test checks that
+// the plugin does not do so much more often. The test
 // fails if more than kMaxSeedsOverBoundPercent of the seeds exceed them, and prints the ones that do.
 //
 // 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000), and
@@ -63,8 +63,9 @@ using spec::kTimeStepSeconds;
 constexpr double kGravity = 9.81;  // m/s^2, harness::Simulation's default
 constexpr int kStepsPerSeed = 120;
 constexpr int kDefaultSeeds = 100;
+constexpr int kComparisonSeeds = 400;  // the plugin against stock without poison (see that test)
 constexpr int kMaxReportedFailures = 20;
-constexpr double kMaxSeedsOverBoundPercent = 2;  // measured 1.1 (world) and 0.9 (solver-only) over 1,000 seeds (docs/design.md, section 12)
+constexpr double kMaxSeedsOverBoundPercent = 2;  // measured 1.3-1.6 over 1,000 seeds (see above)
 
 int seedCount()
 {
@@ -168,9 +169,8 @@ void runSeed(const harness::SolverSpec& solver, const scenes::HostileParams& par
 /// Runs the seeds; checks counts and finiteness (always) and, if `boundPercent` >= 0, that at most
 /// that share of the seeds exceed the bounds. Returns how many seeds exceeded them.
 int runSeeds(const harness::SolverSpec& solver, const scenes::HostileParams& params = scenes::HostileParams(),
-			 double boundPercent = kMaxSeedsOverBoundPercent)
+			 double boundPercent = kMaxSeedsOverBoundPercent, int seeds = seedCount())
 {
-	const int seeds = seedCount();
 	std::vector<std::string> broken, overBound;
 	Extremes extremes;
 	const int first = std::getenv("BSP_FIRST") ? std::atoi(std::getenv("BSP_FIRST")) : 0;
@@ -208,12 +208,16 @@ TEST(HostileWorld, WithoutPoisonThePluginExceedsTheBoundsNoMoreOftenThanStock)
 {
 	// Stock Bullet spreads NaN from poisoned bodies (it fails the finiteness check in most seeds),
 	// so the comparison runs the same worlds without poison. Stock exceeds the same bounds too
-	// (1,000 seeds: 9 stock, 8 plugin); the plugin may not do so much more often.
+	// (1,000 seeds, world mode: stock 9, plugin 12 in float; stock 7, plugin 9 in double); the
+	// plugin may not do so much more often. At under 1% a run of 100 seeds sees stock over in 0
+	// or 1 of them and the comparison is noise (double, seeds 0-99: stock 0, plugin 2), so it
+	// runs at least 400 (double: stock 3, plugin 3).
 	scenes::HostileParams clean;
 	clean.poisonFraction = 0;
-	const int stockOver = runSeeds(spec::stock(), clean, -1);
-	const int pluginOver = runSeeds(plugin(harness::SolverKind::ShockWorld), clean, -1);
-	EXPECT_LE(pluginOver, 2 * stockOver + seedCount() / 100) << "plugin " << pluginOver << " seeds over the bounds, stock " << stockOver;
+	const int seeds = std::max(seedCount(), kComparisonSeeds);
+	const int stockOver = runSeeds(spec::stock(), clean, -1, seeds);
+	const int pluginOver = runSeeds(plugin(harness::SolverKind::ShockWorld), clean, -1, seeds);
+	EXPECT_LE(pluginOver, 2 * stockOver + seeds / 100) << "plugin " << pluginOver << " seeds over the bounds, stock " << stockOver;
 }
 
 TEST(HostileWorld, AHeavyBodyLandingOnALightOneDoesNotSpinItUp)
