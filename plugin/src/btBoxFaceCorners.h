@@ -19,7 +19,7 @@ subject to the following restrictions:
 
 class btPersistentManifold;
 
-/// D30 (docs/design.md, section 4p): a box face that rests on another box keeps its corners.
+/// D30 (docs/design.md, section 11): a box face that rests on another box keeps its corners.
 ///
 /// Bullet's box-box test (btBoxBoxDetector, dBoxBox2) clips the incident face against the
 /// reference face and keeps only the points that penetrate. A resting face sits at a depth of a

@@ -12,9 +12,8 @@ subject to the following restrictions:
 3. This notice may not be removed or altered from any source distribution.
 */
 
-// The converging velocity step (opt-in: btShockPropagationDiagnostics::m_convergingStep; work in
-// progress of the converging-solver issue, docs/design.md section 4u). One stacked group's step is
-// a list of stages called in order:
+// The converging velocity step: the plugin's velocity step for every group that holds a stack
+// (docs/design.md, section 2). One stacked group's step is a list of stages called in order:
 //
 //   setupRows          Bullet's rows for the step's dt, as a stock step sets them up (no
 //                      Baumgarte term, no split impulse: the position correction's job; two
@@ -69,7 +68,7 @@ btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContac
 {
 	// Bullet's setup, every row starting from zero impulse: the predictor builds the step's
 	// impulses layer by layer from the bottom, and a warm start from last step's points is not the
-	// last step's solution once Bullet has replaced some of them (docs/design.md, section 4u).
+	// last step's solution once Bullet has replaced some of them (docs/design.md, section 6).
 	// The app's SOLVER_USE_WARMSTARTING is kept: with it Bullet's finish writes each point's
 	// impulses (getAppliedImpulse), as in a stock step.
 	btContactSolverInfo stepInfo = info;
@@ -112,7 +111,7 @@ void btShockPropagationConstraintSolver::predictVelocities(const btContactSolver
 	m_predictor->build(pools, m_layers.getNumLayers(), m_contactRowLayer, m_heightOfSolverBody, m_componentOfSolverBody,
 					   m_layers.getNumComponents());
 	// A row past the fixation limit is Bullet's own, both bodies free, and starts as a stock step
-	// starts it: from its point's last impulse (docs/design.md, section 4u).
+	// starts it: from its point's last impulse (docs/design.md, section 4.3).
 	if (info.m_solverMode & SOLVER_USE_WARMSTARTING) m_predictor->warmStartPastLimit(pools, info.m_warmstartingFactor);
 	const int sweeps = m_settings.m_diagnostics.m_predictorIterations;
 	const btScalar converged = m_settings.m_diagnostics.m_predictorConvergence * largestGravity() * info.m_timeStep;

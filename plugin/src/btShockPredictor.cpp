@@ -277,7 +277,7 @@ int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btSc
 	{
 		formComposites(layer, pools, convergedSpeed);
 		// A body its supports do not hold meets their every motion (measured: the leaning columns
-		// topple later with resting supports shown here too; docs/design.md 4u).
+		// topple later with resting supports shown here too; docs/design.md, section 4.4).
 		showRestingSupports(layer, pools.m_bodies, btScalar(0));
 		if (m_composites.size()) run += sweepRows(layer, pools, sweeps, convergedSpeed, true);
 	}
@@ -292,7 +292,7 @@ void btShockPredictor::showRestingSupports(int layer, btAlignedObjectArray<btSol
 	// a box fitted to two supports whose rows move unequally turns, and the box above it turns
 	// further (the 2-D pyramids' first up-and-down cycle from rest left 3.3e-7, 2.3e-5 and
 	// 1.8e-4 m/s of row error at bases 40, 60 and 80 in float, and each later cycle handed it up
-	// again until base 60 moved at 0.08 s; docs/design.md 4u). Only the predictor's target
+	// again until base 60 moved at 0.08 s; docs/design.md, section 4.4). Only the predictor's target
 	// changes: the impulses still act on both bodies, and the corrector's sweeps see every
 	// motion. A restSpeed of 0 shows every motion.
 	const int begin = m_layerStart[layer], end = m_layerStart[layer + 1];
@@ -422,7 +422,7 @@ bool btShockPredictor::cannotConverge(btAlignedObjectArray<btScalar>& changes, i
 	// velocities close on it (no velocity of it holds both rows; its impulses grow by the same
 	// amount each sweep), as in a pile. Checked only as the count doubled (8, 16, 32, ...), a
 	// visit that would end at 128 ran 64 sweeps past the check at 64 that could have ended it:
-	// the pit cost 27.7 times stock, checked every second sweep 14.8 (docs/design.md 4u).
+	// the pit cost 27.7 times stock, checked every second sweep 14.8 (docs/design.md, section 4.4).
 	changes.resize(sweep + 1);
 	changes[sweep] = largest;
 	const int done = sweep + 1;

@@ -87,7 +87,7 @@ class btStackLayers;
 /// 1.2e-4 m/s), while the search takes alpha = m_bottom / (m_bottom + m_top), where the two move
 /// together. A search that keeps nothing ends the cycles. (PGS's own objective
 /// is no measure here: with Coulomb friction its bounds move with the normal impulses, and a
-/// search on it stopped a resting tower's predictor; docs/design.md, section 4u.)
+/// search on it stopped a resting tower's predictor; docs/history.md, section 4u.)
 class btShockPredictor
 {
 public:
@@ -119,7 +119,7 @@ public:
 	/// free, as Bullet solves it) from its point's last impulse times factor, applied to both
 	/// bodies, as a stock step starts it: from zero a few sweeps cannot carry a heavy body through
 	/// a light one (609 t on 83 g: its velocity fell as g t while the position correction held it
-	/// up, docs/design.md 4u); the warm start carries the load from step to step.
+	/// up, docs/design.md, section 4.3); the warm start carries the load from step to step.
 	void warmStartPastLimit(const Pools& pools, btScalar factor);
 
 	/// Largest s at which a row's lower body is fixated: 1 / sqrt(FLT_EPSILON) = 2.9e3, in float and
@@ -138,7 +138,7 @@ public:
 	/// maxFixationScale(). A free side that moves, however little, is no zero-mass axis: a 1e7 kg
 	/// box on a 1 kg one (s = 1e7 + 1) was once taken for one, its row skipped by the predictor
 	/// and its position fixated, and the box's velocity fell as g t while its position held
-	/// (1.1e8 J from nothing in 2 s; docs/design.md 4u).
+	/// (1.1e8 J from nothing in 2 s; docs/design.md, section 4.3).
 	static btScalar fixationScale(btScalar freeTerm, btScalar total) { return freeTerm > btScalar(0) ? total / freeTerm : btScalar(0); }
 
 private:
@@ -182,7 +182,7 @@ private:
 	/// J_A (vA, wA) + J_B (vB, wB): a row's velocity from its bodies' linear and angular
 	/// velocities (whole, delta or a change), summed term by term, A then B, as Bullet's kernel
 	/// does (sideVelocity(A) + sideVelocity(B) rounds differently, and the pushed stack's truth
-	/// turns on that rounding; docs/design.md 4u).
+	/// turns on that rounding; docs/history.md, section 4u).
 	static btScalar rowVelocity(const btSolverConstraint& c, const btVector3& vA, const btVector3& wA, const btVector3& vB, const btVector3& wB)
 	{
 		return c.m_contactNormal1.dot(vA) + c.m_relpos1CrossNormal.dot(wA) + c.m_contactNormal2.dot(vB) + c.m_relpos2CrossNormal.dot(wB);

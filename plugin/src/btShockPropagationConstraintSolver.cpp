@@ -14,7 +14,7 @@ subject to the following restrictions:
 
 // Velocity-based shock propagation: K. Erleben, "Velocity-Based Shock Propagation for Multibody
 // Dynamics Animation", ACM TOG 26(2), Article 12, 2007. The step as built is described in
-// btShockPropagationConstraintSolver.h and docs/design.md (decisions D1-D15).
+// btShockPropagationConstraintSolver.h and docs/design.md (decisions D1-D15: docs/history.md).
 
 #include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
 
@@ -204,7 +204,7 @@ void btShockPropagationConstraintSolver::startFromOwnImpulses()
 	// step (which starts its rows from zero; markPointsSolved set its felt share unequal to its
 	// impulse) starts from zero here too. Those impulses are a stacked group's loads; where the
 	// group came apart they no longer balance, and Bullet's few sweeps turned a column's load on
-	// an 18 g body into 1.7e3 m/s (hostile seed 876; docs/design.md 4u). A point Bullet's solve
+	// an 18 g body into 1.7e3 m/s (hostile seed 876; docs/design.md, section 6). A point Bullet's solve
 	// left keeps its impulse (markPointsFelt), so a group that stays flat is warm started as stock.
 	for (int i = 0; i < m_manifolds.size(); ++i)
 		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)

@@ -13,7 +13,7 @@ subject to the following restrictions:
 */
 
 // Stack analysis after K. Erleben, "Velocity-Based Shock Propagation for Multibody Dynamics
-// Animation", ACM TOG 26(2), 2007, with per-component analysis (docs/design.md, section 2).
+// Animation", ACM TOG 26(2), 2007, with per-component analysis (docs/design.md, section 3).
 
 #include "BulletShockPropagation/btStackLayers.h"
 

@@ -312,7 +312,7 @@ void btShockPredictor::settleWelds(int sweeps, btScalar convergedSpeed, btAligne
 	// (cannotConverge, as a layer's: in piles most weld sweeps stall at a fixed change). Without:
 	// the pushed stack's members stayed 0.2-0.3 m/s off their composite's motion whenever a corner
 	// let go, the cycles stalled there and its boxes parted by 0.8-8.6 mm in 2 s; with: 0.015 mm
-	// (docs/design.md 4u).
+	// (docs/design.md, section 4.6).
 	for (int s = 0; s < sweeps; ++s)
 	{
 		btScalar largest = 0;

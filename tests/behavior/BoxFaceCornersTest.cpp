@@ -1,4 +1,4 @@
-// D30 (docs/design.md, section 4p; btShockPropagationSettings::m_keepBoxFaceCorners): a box face
+// D30 (docs/design.md, section 11; btShockPropagationSettings::m_keepBoxFaceCorners): a box face
 // resting on a box keeps the corners that lie on the other face as contact points. The first
 // tests call the private routine (plugin/src/btBoxFaceCorners.h) on hand-made manifolds, whose
 // expected points are geometry; the last ones run the pushed stack, whose expected motion is
@@ -193,7 +193,7 @@ TEST(BoxFaceCorners, APushedStackSlidesAsOneOnlyWithTheCorners)
 		EXPECT_GT(on.corners, 0) << spec.label();  // from about 0.45 s, when the base slides 1.5 cm a step
 	}
 	// Without D30: Bullet's points alone, and the stack pivots apart on its missing edges (13 cm
-	// and more at 10 iterations, docs/design.md, section 4p). Measured in the solver-only mode: the
+	// and more at 10 iterations, docs/design.md, section 11). Measured in the solver-only mode: the
 	// world's second phase (D4, issue 38) detects the missing edge again at t + dt and corrects it,
 	// which keeps the world's stack within 1.6 cm even without D30.
 	harness::SolverSpec off = spec::shockSolverOnly();

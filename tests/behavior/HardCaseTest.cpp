@@ -211,7 +211,7 @@ constexpr int kPiles = 12;
 
 /// The deepest penetration of each of twelve piles (seeds 1-12), and the fastest body late in any
 /// of them. A pile is chaotic: any change to a solver reorders its impacts, and one seed's depth
-/// moves by 30-50% between two equally good solvers (docs/design.md, D23, D26), so the piles are
+/// moves by 30-50% between two equally good solvers (docs/history.md, D23, D26), so the piles are
 /// compared seed by seed, as a paired sample.
 PitResult dropIntoPit(const harness::SolverSpec& solver)
 {

@@ -103,7 +103,7 @@ TEST(RigidSliding, APushedStackAcceleratesAtTheCoulombRate)
 {
 	// Measured (float, this test's momentum fit): 1.904-2.112 m/s^2 at 3, 5, 10 and 20 iterations; its
 	// boxes still end 13-26 cm apart (Bullet replaces the sliding base's contact points every step
-	// once it slides more than their breaking threshold per step: docs/design.md, section 8).
+	// once it slides more than their breaking threshold per step: docs/design.md, section 11).
 	expectCoulombRate("pushed stack", pushedStack, kPushExpected, 0.1);
 }
 

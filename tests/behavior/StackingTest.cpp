@@ -32,7 +32,7 @@ TEST(Stacking, StockSequentialImpulseAt10IterationsLetsStackOf20Fall)
 TEST(Stacking, SolverOnlyDropInKeepsStackOf20Up)
 {
 	// The one-line swap into a stock btDiscreteDynamicsWorld, default settings (README, "Swap it
-	// into an existing Bullet app"; measured in docs/design.md, section 10, "Solver-only mode").
+	// into an existing Bullet app"; measured in docs/history.md, section 10, "Solver-only mode").
 	harness::Trial run(spec::shockSolverOnly(), "tower", {{"n", 20}});
 	run.run(10.0);
 	EXPECT_LT(run.maxDrift(), harness::kStandingDriftMeters);
@@ -48,7 +48,7 @@ TEST(Stacking, PyramidWithBase20DriftsLessThan1cmIn10s)
 TEST(Stacking, FlushEndedBrickWallOf200DriftsLessThan1cmIn10s)
 {
 	// Running bond with half bricks closing the short rows: every piece rests on its support.
-	// (The default wall's overhanging end bricks need weight from the rows above: docs/design.md,
+	// (The default wall's overhanging end bricks need weight from the rows above: docs/history.md,
 	// section 10, "Weighting f".)
 	harness::Trial run(spec::shock(), "wall", {{"halfBricks", 1}, {"length", 12}});
 	ASSERT_EQ(run.bodies().size(), 200u);
@@ -87,7 +87,7 @@ TEST(Stacking, LeaningStackWithCentreOfMassOutsideBaseStillFalls)
 	// No over-stability from fixation: each cube overhangs the one below by more than half its
 	// width, so its centre of mass is outside its support and the stack must topple. (A stack that
 	// is stable box by box but not as a whole: the truth suite's offset stacks, tests/truth; it needs
-	// the top-down pass, D16 in docs/design.md.)
+	// the top-down pass, D16 in docs/history.md.)
 	harness::Trial run(spec::shock(), "leaning_tower", {{"n", 4}, {"shift", 0.55}});
 	run.run(5.0);
 	EXPECT_GT(run.drift().drift(run.named("top")), 0.5);

@@ -1,4 +1,4 @@
-// D19 (docs/design.md, section 4d): each free body's rows against its fixated supports are solved
+// D19 (docs/history.md, section 4d): each free body's rows against its fixated supports are solved
 // as one block before its layer's sweeps, and a layer ends once a sweep changes no row's velocity
 // by more than the convergence speed (at least m_layerMinIterations sweeps, at most N).
 #include "Fixture.h"
@@ -46,7 +46,7 @@ TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
 
 TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
 {
-	// D21 (docs/design.md, section 4f): the global pass ends once a sweep changes the rows'
+	// D21 (docs/history.md, section 4f): the global pass ends once a sweep changes the rows'
 	// velocities by at most the convergence speed in total. A settled, warm-started pyramid of base
 	// 10 converges in its first sweep and still stands with the ground carrying its weight; cubes
 	// falling into a pit never converge within ceil(f N) = 5 sweeps, so they run every one.
@@ -75,7 +75,7 @@ TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
 
 TEST(LayerIterationFloor, BenchmarkDemoThousandStackHoldsAtTheAppsFiveIterations)
 {
-	// D22 (docs/design.md, section 4g): BenchmarkDemo's 1000 stack asks for 5 iterations. With each
+	// D22 (docs/history.md, section 4g): BenchmarkDemo's 1000 stack asks for 5 iterations. With each
 	// layer capped at those 5 sweeps, unconverged layers handed their loads down and the stack crept
 	// (measured in float: 1.65 cm at 10 s, from about 4 s); allowed up to 10 (Bullet's default N) it
 	// does not move (0.02 cm), and costs less.
@@ -87,7 +87,7 @@ TEST(LayerIterationFloor, BenchmarkDemoThousandStackHoldsAtTheAppsFiveIterations
 
 TEST(ConvergingPredictor, PitLayersThatCannotConvergeEndEarly)
 {
-	// docs/design.md, section 4u: in a pile a free cube wedged between fixated cubes whose
+	// docs/design.md, section 4.4: in a pile a free cube wedged between fixated cubes whose
 	// velocities close on it has no velocity that holds both rows, so its layer's sweeps never
 	// reach the convergence speed (the impulses grow by the same amount each sweep). The
 	// predictor ends a layer once its measured rate cannot reach that speed within its sweeps,
@@ -106,7 +106,7 @@ TEST(ConvergingPredictor, PitLayersThatCannotConvergeEndEarly)
 
 TEST(ConvergingPredictor, PyramidOfBase80StandsWhereHandingUpItsSupportsErrorTurnsItApart)
 {
-	// docs/design.md, section 4u: the predictor fits each layer to its fixated supports, and a
+	// docs/design.md, section 4.4: the predictor fits each layer to its fixated supports, and a
 	// box fitted to two supports whose rows move unequally turns, the box above it further. The
 	// supports' motion below the convergence speed (their own solve's error) handed up that way
 	// grew up the 2-D pyramid (in float the first cycle left 1.8e-4 m/s of row error at the top
@@ -123,7 +123,7 @@ TEST(ConvergingPredictor, PyramidOfBase80StandsWhereHandingUpItsSupportsErrorTur
 
 TEST(ConvergingPredictor, TheClassicOrderCarriesATowerAndTheDoorToTheGround)
 {
-	// docs/design.md, section 4u: without weight feeling the predictor delivers each cycle's
+	// docs/design.md, section 4.7: without weight feeling the predictor delivers each cycle's
 	// reactions after its up pass and meets them only in the next cycle, so a load reaches the
 	// ground one layer per cycle. Its cycles used to end once no layer needed a second sweep, which
 	// with support blocks is every cycle: the tower of 20 was left to the corrector with one

@@ -1,4 +1,4 @@
-// D25 (docs/design.md, section 4j): where statics says a body must tip, the weight pass tips it
+// D25 (docs/history.md, section 4j): where statics says a body must tip, the weight pass tips it
 // together with everything resting on it alone, as one rigid body (btTippingComposite.h). D26
 // (section 4k): a weight-pass rejection restores only the rejected body's island. D27 (section
 // 4l): an impact handed down turns what it cannot be carried past, whatever the weight does.
@@ -34,7 +34,7 @@ TEST(TippingComposites, AColumnOverALedgeTipsAsOneRigidBodyAsDynamicsSays)
 
 TEST(RejectPerIsland, StaircaseColumnsBatchedInOneSolveAllTopple)
 {
-	// D26 (docs/design.md, section 4k): Bullet solves its small islands in one batch, so a layer of
+	// D26 (docs/history.md, section 4k): Bullet solves its small islands in one batch, so a layer of
 	// the weight pass holds the boxes of every column at that height. A guard rejection restores
 	// only the rejected body's island; restoring the whole layer held up every other column too.
 	// BenchmarkDemo's staircases, 4 x 4 columns of 20 (each layer 0.35 m further out: statics says
@@ -79,7 +79,7 @@ double referenceHalfHeightTime()
 
 TEST(ImpactTipping, ABoxLandingOnAnOverhangTurnsItAsAConvergedSolverDoes)
 {
-	// D27 (docs/design.md, section 4l): each box of the column lands on the staircase below it at
+	// D27 (docs/history.md, section 4l): each box of the column lands on the staircase below it at
 	// up to 15 m/s. Its momentum acts where no interface below the hinge can carry it, so the part
 	// above the hinge turns at once, although its weight alone would be carried. Reference: stock
 	// SI at 8 sub-steps x 50 iterations (converged: 16 x 50 and 8 x 200 give the same). Measured:

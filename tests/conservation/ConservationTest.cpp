@@ -304,7 +304,7 @@ EnergyExcess measureEnergyExcess(const std::vector<btScalar>& masses, const char
 // Gravity is the only source of energy: the kinetic energy may never
 // exceed the potential energy given up. Before the position correction followed the velocity
 // step's rule, it held the heavy box up by its position while the row let its velocity fall:
-// 8.2e3 J of kinetic energy with the column at rest in position (docs/design.md, section 4u).
+// 8.2e3 J of kinetic energy with the column at rest in position (docs/design.md, section 7).
 TEST(Conservation, AHeavyBoxOnALightOneGainsNoEnergyBeyondWhatItsFallReleases)
 {
 	const EnergyExcess e = measureEnergyExcess({btScalar(1), btScalar(1e5)}, "1e5:1 pair");
@@ -319,7 +319,7 @@ TEST(Conservation, AHeavyBoxOnALightOneGainsNoEnergyBeyondWhatItsFallReleases)
 // correction's, so the heavy box's velocity fell as g t while its position held: 1.9e9 J of kinetic
 // energy with nothing released, in float and double (5.6e7 on 1 kg: 1.1e8 J). A free side that
 // moves at all is now solved by its s: past the limit, both free, and the heavy box sinks through
-// as under stock, its kinetic energy what the fall releases (docs/design.md, section 4u).
+// as under stock, its kinetic energy what the fall releases (docs/design.md, section 4.3).
 TEST(Conservation, AVeryHeavyBoxOnALightOneGainsNoEnergyBeyondWhatItsFallReleases)
 {
 	const EnergyExcess e = measureEnergyExcess({btScalar(0.018), btScalar(1e7)}, "1e7 kg on 18 g");
@@ -336,7 +336,7 @@ TEST(Conservation, AVeryHeavyBoxOnALightOneGainsNoEnergyBeyondWhatItsFallRelease
 // fell as g t while the position correction held it up: 7.0e6 J of kinetic energy beyond the
 // potential energy released within 2 s (world mode). Started from their points' last impulses, as
 // a stock step starts them, those rows carry the load from step to step and the column gains
-// nothing (docs/design.md, section 4u). Stock SI in the same run for reference.
+// nothing (docs/design.md, section 4.3). Stock SI in the same run for reference.
 TEST(Conservation, AColumnWithRowsPastTheFixationLimitGainsNoEnergy)
 {
 	const std::vector<btScalar> masses = {btScalar(0.147), btScalar(3849), btScalar(1.01), btScalar(0.083), btScalar(6.09e5)};

@@ -146,7 +146,7 @@ TEST(StructuresOnIce, PyramidOfBase12KeepsItsMomentumAndStands) { expectConserve
 // Pyramid of base 20 (210 boxes) and the wall: stock SI drifts 5.3 cm and 16.7 m. Before each
 // predictor cycle was line searched on its own, their cycles diverged once the float residual sat
 // at the convergence speed (1.0e-6, 3.4e-6, 1.2e-4 m/s over three cycles) and both gained
-// energy (base 20: 6.8 m of drift, 1.5e3 J; the wall 13.9 m, 480 J; docs/design.md 4u).
+// energy (base 20: 6.8 m of drift, 1.5e3 J; the wall 13.9 m, 480 J; docs/design.md, section 4.7).
 TEST(StructuresOnIce, PyramidOfBase20KeepsItsMomentumAndStands) { expectConserved("pyramid", {{"base", 20}}, "pyramid of base 20"); }
 TEST(StructuresOnIce, WallKeepsItsMomentumAndStands) { expectConserved("wall", {}, "wall"); }
 

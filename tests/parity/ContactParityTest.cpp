@@ -132,7 +132,7 @@ TEST(ContactParity, KinematicTurntable)
 // Static friction holds far more than the cubes need, so physics says they move with the plate:
 // after 10 s neither has slipped on it. D32 hides a support's motion slower than the convergence
 // speed from the layer above, as the solve's error; a moving kinematic body drives the plate, and
-// what it drives carries its load (docs/design.md, section 4t). Stock Bullet lets the top cube
+// what it drives carries its load (docs/history.md, section 4t). Stock Bullet lets the top cube
 // creep (about 2 mm in 10 s).
 TEST(ContactParity, SlowlyPushedPlateCarriesItsStack)
 {

@@ -1,7 +1,7 @@
 // Determinism: the same scene built twice from scratch in the same process, stepped 600 times
 // (10 s at 60 Hz), ends with bit-identical transforms, in the world mode and in the solver-only
 // mode. The two runs get different heap addresses, so nothing may depend on pointer values.
-// What breaks determinism is listed in docs/design.md, section 13.
+// What breaks determinism is listed in docs/design.md, section 14.
 
 #include "../behavior/Fixture.h"
 

@@ -40,10 +40,10 @@ const Config kConfigs[] = {
 	{"mlcp", harness::SolverKind::MLCPDantzig, 10, 1, false},
 };
 
-/// Truths the plugin's default does not hold yet (docs/design.md, section 8, "Open truths"). They
-/// run and print like the others, and the test is reported as skipped with the plugin's figures
-/// (and whether it held in this build: a marginal case may hold in double and not in float).
-/// None since D30 (the sliding stacks; section 4p).
+/// Truths the plugin's default does not hold yet (they would be listed in docs/design.md, section
+/// 12, known limits). They run and print like the others, and the test is reported as skipped with
+/// the plugin's figures (and whether it held in this build: a marginal case may hold in double
+/// and not in float). None: the converging step holds all 26.
 const std::vector<std::string> kOpenTruths = {};
 
 bool isOpen(const std::string& name)
@@ -103,7 +103,7 @@ TEST_P(Truth, HoldsUnderThePluginDefault)
 	{
 		// Reported, not asserted: a marginal case may hold in one build and not the other (the
 		// ragdoll pile did, before D17), so an open truth that holds in this build only says so.
-		GTEST_SKIP() << "open truth (docs/design.md, section 8)" << (openHolds ? ", holds in this build:" : ":") << openFigures;
+		GTEST_SKIP() << "open truth (docs/design.md, section 12)" << (openHolds ? ", holds in this build:" : ":") << openFigures;
 	}
 }
 

@@ -159,10 +159,10 @@ TEST(ContactReference, RecordsTheStockSolverImpulsesOnTheReferenceRows)
 
 TEST(ContactReference, PluginImpulsesCarryTheWeightOfTheStack)
 {
-	// Weight feeling (docs/design.md, D16): the loads fixation withheld are handed down, so the
+	// Weight feeling (docs/history.md, D16): the loads fixation withheld are handed down, so the
 	// plugin's step impulses under the bottom box carry the whole stack and solve the step's
 	// contact problem as the Eigen reference does. (Erleben's classic method misses it: the
-	// bottom box's impulse is its own weight plus a warm-start lag; docs/design.md, D13.)
+	// bottom box's impulse is its own weight plus a warm-start lag; docs/history.md, D13.)
 	Captured run("tower", {{"n", 10}, {"mass", kMassKg}}, harness::SolverKind::ShockWorld, 10);
 	for (int i = 0; i < 30; ++i) run.sim->step();
 	const harness::ContactProblem p = run.step();

@@ -1,4 +1,4 @@
-// Graph and layer specs on hand-built inputs, with no Bullet world (docs/design.md, section 2).
+// Graph and layer specs on hand-built inputs, with no Bullet world (docs/design.md, section 3).
 #include <BulletShockPropagation/btStackLayers.h>
 
 #include <gtest/gtest.h>

@@ -113,7 +113,7 @@ Verdict seesawCase(const harness::SolverSpec& spec)
 // which bodies meet, so one start decides little: across the 5 starts below, the converged stock
 // runs themselves scatter the ragdolls' mean head height from 0.13 to 0.36 m, and stock with 4 sub-steps
 // x 10 iterations sits below the more converged ones (ensemble means 0.16 against 0.18-0.24 m for
-// 4 x 50, 8 x 20, 8 x 50 and 16 x 50; docs/design.md, section 4u). Each case runs the same starts under
+// 4 x 50, 8 x 20, 8 x 50 and 16 x 50; docs/history.md, section 4u). Each case runs the same starts under
 // the solver and under the reference (SI 8 sub-steps x 20 iterations) and compares the means.
 
 harness::SolverSpec collapseReference() { return stockReference(8, 20); }

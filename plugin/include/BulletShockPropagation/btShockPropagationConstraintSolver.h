@@ -118,7 +118,7 @@ private:
 	void solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void startFromOwnImpulses();
 	void markPointsFelt();
-	// The converging step (opt-in, btShockPropagationDiagnostics::m_convergingStep), its stages in order.
+	// The converging step of a group that holds a stack, its stages in order (docs/design.md, section 2).
 	void solveConverging(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	btContactSolverInfo setupRows(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
 	void predictVelocities(const btContactSolverInfo& info);

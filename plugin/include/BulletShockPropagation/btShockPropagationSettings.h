@@ -97,7 +97,7 @@ struct btShockPropagationDiagnostics
 	/// The predictor: a layer visit ends once a sweep moves no row's bodies by more
 	/// than this share of |g| dt along the row (unitless; 6e-6 = 1 micrometre/s at 9.81 m/s^2 and
 	/// 60 Hz). A layer's leftover error is handed to the next one: at 6e-4 (0.1 mm/s) the tower of
-	/// 20 moves at 3.6 s, at 6e-6 it stands (docs/design.md, section 4u).
+	/// 20 moves at 3.6 s, at 6e-6 it stands (docs/design.md, section 4.4).
 	btScalar m_predictorConvergence = btScalar(6e-6);
 
 	/// Most sweeps of each layer visit of the predictor (count).
@@ -107,14 +107,14 @@ struct btShockPropagationDiagnostics
 	/// starts each layer from the final motion of the layers below it, each cycle is line searched
 	/// on its own, and the cycles end once no layer needs a second sweep. 4: all 156 truth runs
 	/// (26 truths at 5, 10, 20 iterations, world and solver-only; float and double); float with
-	/// 3, 5, 6, 8: 153, 153, 156, 154, the pushed stack's boxes parting by 1.0-1.5 cm (section 4u).
+	/// 3, 5, 6, 8: 153, 153, 156, 154, the pushed stack's boxes parting by 1.0-1.5 cm (docs/design.md, section 4.7).
 	int m_predictorCycles = 4;
 
 	/// The predictor's cycles after the first end their layer visits at this share of the
 	/// last cycle's coupled residual (unitless; never below m_predictorConvergence's speed): an
 	/// inexact solve, as far as the outer error warrants. At 0.1 the ledge column tips 11-13%
 	/// faster than rigid-body dynamics says, at 0.01 4% (exact: 3%); the pit costs 11.9 times
-	/// stock against 14.8 with exact visits (docs/design.md, section 4u).
+	/// stock against 14.8 with exact visits (docs/design.md, section 4.7).
 	btScalar m_predictorForcing = btScalar(0.01);
 };
 

@@ -24,7 +24,7 @@ struct btShockPropagationStatistics
 	int m_largestLayer = 0;       ///< most free bodies in one layer
 	int m_numFixatedBodies = 0;   ///< body fixations over all layers (a body is fixated at most once)
 	int m_numLayeredGroups = 0;   ///< groups solved layer by layer (the others had no stacks)
-	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (docs/design.md, section 12)
+	int m_numSkippedBodies = 0;   ///< bodies left out because of NaN/Inf state (docs/design.md, section 10)
 	int m_numGlobalSweeps = 0;    ///< corrector sweeps (Bullet's own, every body free; they end once converged)
 	int m_numLayerSweeps = 0;     ///< predictor sweeps: per cycle, the most any layer visit ran
 	int m_numBoxFaceCorners = 0;  ///< contact points added where a box face rested on a box (D30)

@@ -18,7 +18,7 @@ subject to the following restrictions:
 #include "btContactGraph.h"
 #include "btShockPropagationExport.h"
 
-/// Stack layers of a contact graph (Erleben 2007, "Stack layers"; docs/design.md, section 2).
+/// Stack layers of a contact graph (Erleben 2007, "Stack layers"; docs/design.md, section 3).
 ///
 /// Definitions, for one connected component of the graph (components are found here, because
 /// Bullet merges small islands into one solveGroup call):
