@@ -18,6 +18,8 @@ subject to the following restrictions:
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h"
 #include "LinearMath/btMatrix3x3.h"
 
+#include "btCholesky6.h"
+
 class btStackLayers;
 
 /// The predictor stage of the velocity step: shock propagation (Erleben 2007) with weight
@@ -232,7 +234,13 @@ private:
 	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
-	bool supportFactor(int body, struct btCholesky6& factor) const;
+	bool supportFactor(int body, btCholesky6& factor) const;
+	// supportFactor's result per solver body for the step (its rows and their Jacobians are fixed
+	// once build has ended): 0 not yet formed, 1 spans (m_spanFactors holds the factor), 2 does not.
+	// Valid only after build (grounding changes which rows are one-sided while it runs).
+	mutable btAlignedObjectArray<char> m_spanState;
+	mutable btAlignedObjectArray<btCholesky6> m_spanFactors;
+	bool m_spanCached = false;
 	void addSupportRows(int body, btScalar* A, int stride, int offset) const;
 	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
@@ -313,7 +321,7 @@ private:
 	btScalar compositeMotion(int layer, const btAlignedObjectArray<btSolverBody>& bodies) const;
 	void finishComposites(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
 	void settleWelds(int sweeps, btScalar convergedSpeed, btAlignedObjectArray<btSolverBody>& bodies);
-	bool weldFactor(int body, struct btCholesky6& factor) const;
+	bool weldFactor(int body, btCholesky6& factor) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
 	btAlignedObjectArray<int> m_layerFreeStart, m_layerFree;  // per layer: its free bodies (bodies with support rows in it)
