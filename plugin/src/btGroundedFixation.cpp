@@ -222,7 +222,8 @@ bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
 	// A = sum over the body's one-sided support rows of J_r J_r^T (its side), factored: it has
 	// full rank where the rows fix all six degrees of freedom. Formed once per body and step
 	// after build (grounding, welds, the held test and the settle ask for it several times).
-	if (m_spanCached && m_spanState[body] != 0)
+	const bool cached = body < m_spanState.size();
+	if (cached && m_spanState[body] != 0)
 	{
 		if (m_spanState[body] == 1) factor = m_spanFactors[body];
 		return m_spanState[body] == 1;
@@ -230,7 +231,7 @@ bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
 	btScalar A[6][6] = {};
 	addSupportRows(body, &A[0][0], 6, 0);
 	const bool spans = factor.factor(A, btScalar(0), kSpanMinPivot, true);
-	if (m_spanCached)
+	if (cached)
 	{
 		m_spanState[body] = spans ? 1 : 2;
 		if (spans) m_spanFactors[body] = factor;

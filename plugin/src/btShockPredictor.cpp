@@ -78,7 +78,7 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 							 const btAlignedObjectArray<int>& heightOfSolverBody, const btAlignedObjectArray<int>& componentOfSolverBody,
 							 int numComponents)
 {
-	m_spanCached = false;
+	m_spanState.resize(0);
 	m_numLayers = numLayers;
 	m_componentOfSolverBody = &componentOfSolverBody;
 	m_slope.resize(numComponents);
@@ -126,7 +126,6 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 	m_spanState.resize(pools.m_bodies.size());
 	m_spanFactors.resize(pools.m_bodies.size());
 	for (int i = 0; i < m_spanState.size(); ++i) m_spanState[i] = 0;
-	m_spanCached = true;
 }
 
 void btShockPredictor::warmStartPastLimit(const Pools& pools, btScalar factor)

@@ -237,10 +237,9 @@ private:
 	bool supportFactor(int body, btCholesky6& factor) const;
 	// supportFactor's result per solver body for the step (its rows and their Jacobians are fixed
 	// once build has ended): 0 not yet formed, 1 spans (m_spanFactors holds the factor), 2 does not.
-	// Valid only after build (grounding changes which rows are one-sided while it runs).
+	// Empty while build runs (grounding changes which rows are one-sided).
 	mutable btAlignedObjectArray<char> m_spanState;
 	mutable btAlignedObjectArray<btCholesky6> m_spanFactors;
-	bool m_spanCached = false;
 	void addSupportRows(int body, btScalar* A, int stride, int offset) const;
 	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
