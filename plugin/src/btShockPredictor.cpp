@@ -327,7 +327,6 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 	m_sweepAngular.resize(bodies.size());
 	m_sweepDiffLinear.resize(bodies.size());
 	m_sweepDiffAngular.resize(bodies.size());
-	m_snapAt.resize(bodies.size());
 	m_diffAt.resize(bodies.size());
 	const bool anyComposite = composites && m_composites.size() > 0;
 	if (!anyComposite) m_composites.resize(0);
@@ -343,11 +342,24 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 	if (m_stamp > 0xffffffffu - unsigned(sweeps) - 2u)
 	{
 		// Before the stamps wrap (after about 4e9 sweeps), no body has moved or been recorded.
-		for (int i = 0; i < m_movedAt.size(); ++i) m_movedAt[i] = m_snapAt[i] = m_diffAt[i] = 0;
+		for (int i = 0; i < m_movedAt.size(); ++i) m_movedAt[i] = m_diffAt[i] = 0;
 		m_stamp = 0;
 	}
 	++m_stamp;
-	for (int i = begin; i < end; ++i) m_movedAt[m_rows[i].m_row->m_solverBodyIdA] = m_movedAt[m_rows[i].m_row->m_solverBodyIdB] = m_stamp;
+	// Each body's velocity as the first sweep begins. Only the layer's rows change a velocity
+	// during the visit, so a body's velocity as a sweep begins is the one recorded when its
+	// change over the last sweep that touched it was formed (below), or this one.
+	for (int i = begin; i < end; ++i)
+	{
+		const btSolverConstraint& c = *m_rows[i].m_row;
+		m_movedAt[c.m_solverBodyIdA] = m_movedAt[c.m_solverBodyIdB] = m_stamp;
+		const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
+		for (int e = 0; e < 2; ++e)
+		{
+			m_sweepLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity();
+			m_sweepAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity();
+		}
+	}
 	for (int s = 0; s < sweeps; ++s)
 	{
 		for (int i = 0; i < m_composites.size() && anyComposite; ++i)
@@ -361,24 +373,11 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 		// (statically indeterminate) changes no velocity and ends the layer.
 		for (int i = begin; i < end; ++i)
 		{
-			const btSolverConstraint& c = *m_rows[i].m_row;
+			Row& r = m_rows[i];
+			const btSolverConstraint& c = *r.m_row;
 			const bool active = !perBody || m_movedAt[c.m_solverBodyIdA] == moved || m_movedAt[c.m_solverBodyIdB] == moved;
 			m_rowActive[i - begin] = active;
 			if (!active) continue;
-			// Each body's velocity as the sweep begins, recorded once (the sweep's stamp).
-			const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
-			for (int e = 0; e < 2; ++e)
-			{
-				if (m_snapAt[ends[e]] == moved) continue;
-				m_snapAt[ends[e]] = moved;
-				m_sweepLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity();
-				m_sweepAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity();
-			}
-		}
-		for (int i = begin; i < end; ++i)
-		{
-			if (!m_rowActive[i - begin]) continue;
-			Row& r = m_rows[i];
 			if (anyComposite && r.m_free >= 0 && m_compositeOf[r.m_free] >= 0)
 				solveCompositeRow(r, m_composites[m_compositeOf[r.m_free]], bodies);
 			else
@@ -391,14 +390,19 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 			if (!m_rowActive[i - begin]) continue;
 			const Row& r = m_rows[i];
 			const btSolverConstraint& c = *r.m_row;
-			// Each body's velocity change over the sweep, formed once.
+			// Each body's velocity change over the sweep, formed once; its velocity now is the
+			// next sweep's start.
 			const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
 			for (int e = 0; e < 2; ++e)
 			{
 				if (m_diffAt[ends[e]] == moved) continue;
 				m_diffAt[ends[e]] = moved;
-				m_sweepDiffLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity() - m_sweepLinear[ends[e]];
-				m_sweepDiffAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity() - m_sweepAngular[ends[e]];
+				const btVector3& linear = bodies[ends[e]].internalGetDeltaLinearVelocity();
+				const btVector3& angular = bodies[ends[e]].internalGetDeltaAngularVelocity();
+				m_sweepDiffLinear[ends[e]] = linear - m_sweepLinear[ends[e]];
+				m_sweepDiffAngular[ends[e]] = angular - m_sweepAngular[ends[e]];
+				m_sweepLinear[ends[e]] = linear;
+				m_sweepAngular[ends[e]] = angular;
 			}
 			const btScalar change = rowVelocity(c, m_sweepDiffLinear[ends[0]], m_sweepDiffAngular[ends[0]], m_sweepDiffLinear[ends[1]], m_sweepDiffAngular[ends[1]]);
 			largest = btMax(largest, btFabs(change));
@@ -441,6 +445,17 @@ bool btShockPredictor::cannotConverge(btAlignedObjectArray<btScalar>& changes, i
 	return done + needed > sweeps;
 }
 
+bool btShockPredictor::reachable(btScalar r, btScalar last, btScalar convergedSpeed, int cyclesLeft)
+{
+	// At the rate the last cycle lowered the coupled residual (r / last), can the cycles left
+	// bring it to the convergence speed? A cycle that does not lower it cannot.
+	if (!(r < last) || cyclesLeft <= 0) return false;
+	const btScalar rate = r / last;
+	btScalar reach = r;
+	for (int i = 0; i < cyclesLeft && reach > convergedSpeed; ++i) reach *= rate;
+	return reach <= convergedSpeed;
+}
+
 btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bodies) const
 {
 	btScalar worst = 0;
@@ -478,7 +493,8 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 	// the next cycle: a load reaches the ground one layer per cycle and the ground's answer the
 	// top one layer per cycle, so it may take 2 K cycles (header, "Cycles").
 	const int cycleCount = weightFeeling ? btMax(1, cycles) : btMax(btMax(1, cycles), 2 * m_numLayers);
-	btScalar last = SIMD_INFINITY;  // the last cycle's coupled residual (m/s)
+	// The coupled residual before the passes (m/s), then after each cycle.
+	btScalar last = residual(pools.m_bodies);
 	m_visitSpeed = convergedSpeed;
 	for (int cycle = 0; cycle < cycleCount; ++cycle)
 	{
@@ -489,8 +505,10 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 		// shortened before the next one starts from it. Cycles end once the coupled residual
 		// (header) is within the convergence speed, once a search keeps nothing of its cycle (the
 		// next cycle would start from the same velocities and repeat it), or, with weight
-		// feeling, once no layer needs more than one sweep (its down pass has then met every
-		// delivered reaction) or a cycle does not lower the residual.
+		// feeling, once a cycle does not lower the residual (the first: below its value before the
+		// passes), and from the second cycle once no layer needs more than one sweep (its down
+		// pass has then met every delivered reaction) or the cycles left, each lowering the
+		// residual as the last one did, cannot bring it to the convergence speed.
 		int most = 0;
 		recordStart(pools.m_bodies);
 		for (int k = 0; k < m_numLayers; ++k) most = btMax(most, sweepLayer(k, pools, sweeps, convergedSpeed, false));
@@ -504,7 +522,7 @@ int btShockPredictor::predict(const Pools& pools, int sweeps, btScalar converged
 		if (!(lineSearch(pools.m_bodies) > btScalar(0))) break;
 		const btScalar r = residual(pools.m_bodies);
 		if (r <= convergedSpeed) break;
-		if (weightFeeling && cycle > 0 && (most <= 1 || !(r < last))) break;
+		if (weightFeeling && (!(r < last) || (cycle > 0 && (most <= 1 || !reachable(r, last, convergedSpeed, cycleCount - cycle - 1))))) break;
 		last = r;
 		m_visitSpeed = btMax(convergedSpeed, forcing * r);
 	}
