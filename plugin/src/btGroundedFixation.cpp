@@ -47,7 +47,6 @@ subject to the following restrictions:
 
 namespace
 {
-const btScalar kSpanMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: a body's support rows span six directions (welds too)
 const int kMaxClusterBodies = 64;                // largest cluster whose rows are tested together (clusterSpans)
 }  // namespace
 
@@ -192,7 +191,7 @@ bool btShockPredictor::clusterSpans(int root)
 			for (int k = 0; k < j; ++k) sum -= A[i * size + k] * A[j * size + k];
 			if (i == j)
 			{
-				if (!(sum > kSpanMinPivot * A[i * size + i])) return false;
+				if (!(sum > spanMinPivot() * A[i * size + i])) return false;
 				A[i * size + i] = btSqrt(sum);
 			}
 			else
@@ -230,7 +229,7 @@ bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
 	}
 	btScalar A[6][6] = {};
 	addSupportRows(body, &A[0][0], 6, 0);
-	const bool spans = factor.factor(A, btScalar(0), kSpanMinPivot, true);
+	const bool spans = factor.factor(A, btScalar(0), spanMinPivot(), true);
 	if (cached)
 	{
 		m_spanState[body] = spans ? 1 : 2;

@@ -40,6 +40,7 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 	r.m_total = 0;
 	r.m_layerDelta = 0;
 	r.m_restTarget = 0;
+	r.m_fixedTerm = 0;
 	r.m_free = -1;
 	r.m_pastLimit = false;
 	const int hA = heightOfSolverBody[c.m_solverBodyIdA];
@@ -126,6 +127,7 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 	m_spanState.resize(pools.m_bodies.size());
 	m_spanFactors.resize(pools.m_bodies.size());
 	for (int i = 0; i < m_spanState.size(); ++i) m_spanState[i] = 0;
+	formMobility(pools.m_bodies);
 }
 
 void btShockPredictor::warmStartPastLimit(const Pools& pools, btScalar factor)
@@ -266,7 +268,11 @@ btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& 
 	c.m_appliedImpulse = clamped;
 	if (r.m_fixed != 1) applyToSide(c, true, delta, bodies);
 	if (r.m_fixed != 2) applyToSide(c, false, delta, bodies);
-	if (r.m_fixed) r.m_withheld += delta;
+	if (r.m_fixed)
+	{
+		r.m_withheld += delta;
+		moveFixated(r, delta, btScalar(1), bodies);
+	}
 	// The velocity change of the row (m/s): the impulse over its effective mass.
 	return c.m_jacDiagABInv != btScalar(0) ? btFabs(delta / (r.m_scale * c.m_jacDiagABInv)) : btScalar(0);
 }
@@ -408,8 +414,9 @@ int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btSca
 			largest = btMax(largest, btFabs(change));
 			if (btFabs(change) > m_visitSpeed)
 			{
-				if (r.m_fixed != 1) m_movedAt[c.m_solverBodyIdA] = m_stamp;
-				if (r.m_fixed != 2) m_movedAt[c.m_solverBodyIdB] = m_stamp;
+				const bool mobile = mobileFixated(r);
+				if (r.m_fixed != 1 || mobile) m_movedAt[c.m_solverBodyIdA] = m_stamp;
+				if (r.m_fixed != 2 || mobile) m_movedAt[c.m_solverBodyIdB] = m_stamp;
 			}
 		}
 		if (!(largest > m_visitSpeed)) break;
@@ -482,6 +489,7 @@ void btShockPredictor::deliver(int layer, btAlignedObjectArray<btSolverBody>& bo
 		Row& r = m_rows[i];
 		if (r.m_fixed == 0 || r.m_withheld == btScalar(0)) continue;
 		applyToSide(*r.m_row, r.m_fixed == 1, r.m_withheld, bodies);
+		moveFixated(r, r.m_withheld, btScalar(-1), bodies);
 		r.m_withheld = 0;
 	}
 }

@@ -163,6 +163,7 @@ private:
 		btScalar m_total;                     // D_A + D_B + c of the row
 		btScalar m_layerDelta;                // composite rows: impulse change not yet applied to the free body
 		btScalar m_restTarget;                // impulse-scaled motion of a resting fixated side, hidden in its layer's visit (N s)
+		btScalar m_fixedTerm;                 // J_B W' J_B^T of a mobile fixated side (btFixatedMobility.cpp), else 0
 		int m_free;                           // the free side's solver body, -1 if no side is fixated
 		bool m_pastLimit;                     // a one-sided row whose s exceeds maxFixationScale, solved both free
 		int m_kind;
@@ -206,6 +207,7 @@ private:
 	static void freeBothSides(Row& r)
 	{
 		r.m_fixed = 0;
+		r.m_fixedTerm = 0;
 		r.m_free = -1;
 		r.m_scale = 1;
 	}
@@ -237,6 +239,25 @@ private:
 	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
+	/// Jacobi-scaled pivot above which a direction counts as spanned by a body's rows (1e-3 of its
+	/// diagonal): the span test, clusters, welds and the mobility of a fixated body.
+	static btScalar spanMinPivot() { return btScalar(1e-3); }
+	// A fixated body's mobility W' (btFixatedMobility.cpp): the inverse mass left in the
+	// directions its supports do not resist, in linear-linear, linear-angular and angular-angular
+	// blocks; m_mobile: per solver body, its entry in m_mobility, -1 where W' = 0.
+	struct Mobility
+	{
+		Mobility() : m_vv(0, 0, 0, 0, 0, 0, 0, 0, 0), m_vw(0, 0, 0, 0, 0, 0, 0, 0, 0), m_ww(0, 0, 0, 0, 0, 0, 0, 0, 0) {}
+		btMatrix3x3 m_vv, m_vw, m_ww;
+	};
+	btAlignedObjectArray<int> m_mobile;
+	btAlignedObjectArray<Mobility> m_mobility;
+	void formMobility(const btAlignedObjectArray<btSolverBody>& bodies);
+	void mobileResponse(const Row& r, btScalar impulse, btVector3& dv, btVector3& dw) const;
+	/// Moves a row's mobile fixated side by W' J^T (sign impulse): at once as the row changes
+	/// (sign 1), taken back from a delivery of the whole withheld impulse (sign -1).
+	void moveFixated(const Row& r, btScalar impulse, btScalar sign, btAlignedObjectArray<btSolverBody>& bodies) const;
+	bool mobileFixated(const Row& r) const { return r.m_fixed && m_mobile.size() && m_mobile[fixedSide(r)] >= 0; }
 	bool supportFactor(int body, btCholesky6& factor) const;
 	// supportFactor's result per solver body for the step (its rows and their Jacobians are fixed
 	// once build has ended): 0 not yet formed, 1 spans (m_spanFactors holds the factor), 2 does not.

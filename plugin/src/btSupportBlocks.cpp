@@ -121,6 +121,7 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			if (delta == btScalar(0)) continue;
 			c.m_appliedImpulse += delta;
 			r.m_withheld += delta;
+			moveFixated(r, delta, btScalar(1), bodies);
 			if (comp)
 			{
 				comp->m_dv += n * (delta * comp->m_invMass);

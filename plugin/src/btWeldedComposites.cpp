@@ -198,7 +198,7 @@ btScalar btShockPredictor::solveCompositeRow(Row& r, Composite& comp, btAlignedO
 	// form); the fixated side with its own velocity.
 	const btScalar velocity = sideVelocity(c, r.m_fixed == 1, bodies) + n.dot(comp.m_rootDv0) + cr.dot(comp.m_rootDw0) + n.dot(comp.m_dv) + arm.dot(comp.m_dw);
 	const btScalar cfm = c.m_cfm / c.m_jacDiagABInv;
-	const btScalar effective = n.length2() * comp.m_invMass + arm.dot(comp.m_invInertia * arm) + cfm;
+	const btScalar effective = n.length2() * comp.m_invMass + arm.dot(comp.m_invInertia * arm) + cfm + r.m_fixedTerm;
 	if (!(effective > btScalar(0))) return 0;
 	btScalar delta = (r.m_total / effective) * (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv);
 	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, c.m_appliedImpulse + delta));
@@ -208,6 +208,7 @@ btScalar btShockPredictor::solveCompositeRow(Row& r, Composite& comp, btAlignedO
 	comp.m_dw += comp.m_invInertia * (arm * delta);
 	r.m_withheld += delta;
 	r.m_layerDelta += delta;
+	moveFixated(r, delta, btScalar(1), bodies);
 	return btFabs(delta) * effective;
 }
 
