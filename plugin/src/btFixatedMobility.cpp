@@ -65,6 +65,14 @@ void btShockPredictor::formMobility(const btAlignedObjectArray<btSolverBody>& bo
 		const btRigidBody* rb = bodies[b].m_originalBody;
 		if (!rb || !(rb->getInvMass() > btScalar(0)) || m_grounded[b] != 1 || m_supportStart[b] == m_supportStart[b + 1]) continue;
 		if (!(bodies[b].m_linearFactor == btVector3(1, 1, 1) && bodies[b].m_angularFactor == btVector3(1, 1, 1))) continue;
+		// Supports that all resist fix every direction (the body is grounded alone: they span six).
+		bool yielding = false;
+		for (int k = m_supportStart[b]; k < m_supportStart[b + 1] && !yielding; ++k)
+		{
+			const Row& r = m_rows[m_supportRows[k]];
+			yielding = r.m_fixed && r.m_normal && !(r.m_row->m_friction > btScalar(0));
+		}
+		if (!yielding) continue;
 		btCholesky6 span;
 		if (!supportFactor(b, span)) continue;  // grounded as a cluster's member
 		const btScalar invMass = rb->getInvMass();
