@@ -153,11 +153,10 @@ void btShockPredictor::mobileResponse(const Row& r, btScalar impulse, btVector3&
 	dw = f * mobility.m_vw + mobility.m_ww * t;  // v * M is M^T v
 }
 
-void btShockPredictor::moveFixated(const Row& r, btScalar impulse, btScalar sign, btAlignedObjectArray<btSolverBody>& bodies) const
+void btShockPredictor::moveMobile(const Row& r, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies) const
 {
-	if (!r.m_fixed || impulse == btScalar(0) || m_mobile.size() == 0 || m_mobile[fixedSide(r)] < 0) return;
 	btVector3 dv, dw;
-	mobileResponse(r, impulse * sign, dv, dw);
+	mobileResponse(r, impulse, dv, dw);
 	btSolverBody& body = bodies[fixedSide(r)];
 	body.internalGetDeltaLinearVelocity() += dv;
 	body.internalGetDeltaAngularVelocity() += dw;

@@ -219,8 +219,8 @@ void btShockPredictor::addSupportRows(int body, btScalar* A, int stride, int off
 bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
 {
 	// A = sum over the body's one-sided support rows of J_r J_r^T (its side), factored: it has
-	// full rank where the rows fix all six degrees of freedom. Formed once per body and step
-	// after build (grounding, welds, the held test and the settle ask for it several times).
+	// full rank where the rows fix all six degrees of freedom. Formed once per body and step, by
+	// grounding (welds, the held test, the settle and the mobility ask for it again).
 	const bool cached = body < m_spanState.size();
 	if (cached && m_spanState[body] != 0)
 	{

@@ -79,7 +79,6 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 							 const btAlignedObjectArray<int>& heightOfSolverBody, const btAlignedObjectArray<int>& componentOfSolverBody,
 							 int numComponents)
 {
-	m_spanState.resize(0);
 	m_numLayers = numLayers;
 	m_componentOfSolverBody = &componentOfSolverBody;
 	m_slope.resize(numComponents);
@@ -122,12 +121,16 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 			if (layer >= 0 && layer < numLayers) addRow(c, &pools.m_contacts[contact], FRICTION + p, layer, pools.m_bodies, heightOfSolverBody);
 		}
 	bucketSupportRows(pools.m_bodies.size());
-	groundRows(pools.m_bodies, heightOfSolverBody);
-	bucketSupportRows(pools.m_bodies.size());
 	m_spanState.resize(pools.m_bodies.size());
 	m_spanFactors.resize(pools.m_bodies.size());
 	for (int i = 0; i < m_spanState.size(); ++i) m_spanState[i] = 0;
+	groundRows(pools.m_bodies, heightOfSolverBody);
+	bucketSupportRows(pools.m_bodies.size());
 	formMobility(pools.m_bodies);
+	m_blockState.resize(pools.m_bodies.size());
+	m_blockFactors.resize(pools.m_bodies.size());
+	for (int i = 0; i < m_blockState.size(); ++i) m_blockState[i] = 0;
+	m_blockIncluded.resize(m_supportRows.size());
 }
 
 void btShockPredictor::warmStartPastLimit(const Pools& pools, btScalar factor)

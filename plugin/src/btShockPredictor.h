@@ -256,12 +256,17 @@ private:
 	void mobileResponse(const Row& r, btScalar impulse, btVector3& dv, btVector3& dw) const;
 	/// Moves a row's mobile fixated side by W' J^T (sign impulse): at once as the row changes
 	/// (sign 1), taken back from a delivery of the whole withheld impulse (sign -1).
-	void moveFixated(const Row& r, btScalar impulse, btScalar sign, btAlignedObjectArray<btSolverBody>& bodies) const;
+	void moveFixated(const Row& r, btScalar impulse, btScalar sign, btAlignedObjectArray<btSolverBody>& bodies) const
+	{
+		if (impulse != btScalar(0) && mobileFixated(r)) moveMobile(r, impulse * sign, bodies);
+	}
+	void moveMobile(const Row& r, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies) const;
 	bool mobileFixated(const Row& r) const { return r.m_fixed && m_mobile.size() && m_mobile[fixedSide(r)] >= 0; }
 	bool supportFactor(int body, btCholesky6& factor) const;
-	// supportFactor's result per solver body for the step (its rows and their Jacobians are fixed
-	// once build has ended): 0 not yet formed, 1 spans (m_spanFactors holds the factor), 2 does not.
-	// Empty while build runs (grounding changes which rows are one-sided).
+	// supportFactor's result per solver body for the step: 0 not yet formed, 1 spans
+	// (m_spanFactors holds the factor), 2 does not. Grounding forms it once a body's support rows
+	// are final (the rows to bodies that are not grounded freed first); a body whose rows it frees
+	// afterwards (not grounded, alone or in its cluster) did not span and spans less.
 	mutable btAlignedObjectArray<char> m_spanState;
 	mutable btAlignedObjectArray<btCholesky6> m_spanFactors;
 	void addSupportRows(int body, btScalar* A, int stride, int offset) const;
@@ -337,6 +342,10 @@ private:
 	// Support blocks (btSupportBlocks.cpp): each free body's pushing support rows solved at once.
 	void solveBlocks(int layer, const Pools& pools);
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
+	// Each body's block factor for the step (solveBlock): per body 0 none, 1 m_blockFactors holds
+	// it, 2 no factor; per support row slot (m_supportRows), whether the last block held the row.
+	btAlignedObjectArray<char> m_blockState, m_blockIncluded;
+	btAlignedObjectArray<btCholesky6> m_blockFactors;
 	btAlignedObjectArray<int> m_blockRows;
 	btAlignedObjectArray<btScalar> m_blockError;
 	btAlignedObjectArray<const btSolverConstraint*> m_blockContacts;

@@ -56,46 +56,86 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 
 	// The rows that push or would push (and the friction rows of those): their Jacobians on the
 	// body (or composite) and velocity errors. A point Bullet just added starts from no impulse.
-	btScalar A[6][6] = {};
 	btScalar g[6] = {};
 	m_blockRows.resize(0);
 	m_blockError.resize(0);
 	m_blockContacts.resize(0);
+	// A body's block matrix depends only on which of its support rows it holds: its factor is kept
+	// for the step and formed again only when that set changes (not for a composite, whose
+	// Jacobians depend on its members).
+	const bool cache = !comp;
+	bool same = cache && m_blockState[b] == 1;
 	for (int k = m_supportStart[b]; k < m_supportStart[b + 1]; ++k)
 	{
 		const int ri = m_supportRows[k];
 		const Row& r = m_rows[ri];
 		const btSolverConstraint& c = *r.m_row;
-		if (c.m_jacDiagABInv == btScalar(0) || r.m_scale == btScalar(0)) continue;
-		if (r.m_normal)
+		bool included = false;
+		if (c.m_jacDiagABInv != btScalar(0) && r.m_scale != btScalar(0))
 		{
-			bool included = false;
-			for (int j = 0; j < m_blockContacts.size() && !included; ++j) included = m_blockContacts[j] == r.m_normal;
-			if (!included) continue;
+			btVector3 n, cr;
+			freeSide(r, n, cr);
+			const btVector3 arm = cr + offset.cross(n);
+			bool take = true;
+			if (r.m_normal)
+			{
+				take = false;
+				for (int j = 0; j < m_blockContacts.size() && !take; ++j) take = m_blockContacts[j] == r.m_normal;
+			}
+			if (take)
+			{
+				const btScalar fixedVelocity = sideVelocity(c, r.m_fixed == 1, bodies);
+				const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + cr.dot(comp->m_rootDw0) + arm.dot(comp->m_dw) : sideVelocity(c, r.m_fixed == 2, bodies);
+				const btScalar error = (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
+				if (!r.m_normal)
+				{
+					take = c.m_appliedImpulse > btScalar(0) || error > btScalar(0);
+					if (take) m_blockContacts.push_back(&c);
+				}
+				if (take)
+				{
+					const btScalar J[6] = {n.x(), n.y(), n.z(), arm.x(), arm.y(), arm.z()};
+					for (int i = 0; i < 6; ++i) g[i] += J[i] * error;
+					m_blockRows.push_back(ri);
+					m_blockError.push_back(error);
+					included = true;
+				}
+			}
 		}
-		btVector3 n, cr;
-		freeSide(r, n, cr);
-		const btVector3 arm = cr + offset.cross(n);
-		const btScalar fixedVelocity = sideVelocity(c, r.m_fixed == 1, bodies);
-		const btScalar freeVelocity = comp ? n.dot(comp->m_rootDv0 + comp->m_dv) + cr.dot(comp->m_rootDw0) + arm.dot(comp->m_dw) : sideVelocity(c, r.m_fixed == 2, bodies);
-		const btScalar error = (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm) / c.m_jacDiagABInv - fixedVelocity - freeVelocity;
-		if (!r.m_normal)
+		if (cache)
 		{
-			if (!(c.m_appliedImpulse > btScalar(0) || error > btScalar(0))) continue;
-			m_blockContacts.push_back(&c);
+			same = same && m_blockIncluded[k] == char(included);
+			m_blockIncluded[k] = included;
 		}
-		const btScalar J[6] = {n.x(), n.y(), n.z(), arm.x(), arm.y(), arm.z()};
-		for (int i = 0; i < 6; ++i)
-		{
-			g[i] += J[i] * error;
-			for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
-		}
-		m_blockRows.push_back(ri);
-		m_blockError.push_back(error);
 	}
-	if (m_blockRows.size() < 6) return;
+	if (m_blockRows.size() < 6)
+	{
+		if (cache) m_blockState[b] = 2;
+		return;
+	}
 	btCholesky6 factor;
-	if (!factor.factor(A, btScalar(0), kBlockMinPivot, true)) return;
+	if (same)
+		factor = m_blockFactors[b];
+	else
+	{
+		btScalar A[6][6] = {};
+		for (int k = 0; k < m_blockRows.size(); ++k)
+		{
+			btVector3 n, cr;
+			freeSide(m_rows[m_blockRows[k]], n, cr);
+			const btVector3 arm = cr + offset.cross(n);
+			const btScalar J[6] = {n.x(), n.y(), n.z(), arm.x(), arm.y(), arm.z()};
+			for (int i = 0; i < 6; ++i)
+				for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
+		}
+		const bool factored = factor.factor(A, btScalar(0), kBlockMinPivot, true);
+		if (cache)
+		{
+			m_blockState[b] = factored ? 1 : 2;
+			if (factored) m_blockFactors[b] = factor;
+		}
+		if (!factored) return;
+	}
 	btScalar du[6], y[6];
 	factor.solve(g, du);
 	const btVector3 dv(du[0], du[1], du[2]), dw(du[3], du[4], du[5]);
