@@ -31,6 +31,10 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 	for (int i = 0; i < m_manifolds.size(); ++i) numPoints += m_manifolds[i]->getNumContacts();
 	m_correction->reset(m_bodies.size(), m_layers.getNumLayers(), numPoints);
 	for (int i = 0; i < m_bodies.size(); ++i) m_correction->setBody(i, btRigidBody::upcast(m_bodies[i]));
+	// A body with a contact edge (any manifold with points, before the second phase keeps only
+	// the stacked components' ones) is moved by its contacts, never carried by its joints.
+	for (int i = 0; i < m_bodies.size(); ++i)
+		if (m_graph.getNumIncidentEdges(i) > 0) m_correction->markTouching(i);
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	const btScalar dt = info.m_timeStep;
 	if (fraction < btScalar(0)) fraction = m_settings.m_diagnostics.m_correctionFraction;
@@ -70,6 +74,18 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 								   m_layers.getEdgeLayer(edge));
 		}
 	}
+	// The group's joints, for the bodies that hang on them touching nothing.
+	for (int i = 0; i < m_constraints.size(); ++i)
+	{
+		int node[2];
+		for (int side = 0; side < 2; ++side)
+		{
+			const btRigidBody& rb = side ? m_constraints[i]->getRigidBodyB() : m_constraints[i]->getRigidBodyA();
+			const int id = rb.getCompanionId();
+			node[side] = (id >= 0 && id < m_bodies.size() && m_bodies[id] == &rb) ? id : -1;
+		}
+		if (m_constraints[i]->isEnabled()) m_correction->addJoint(node[0], node[1]);
+	}
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
 	if (m_correction->getNumPoints() == 0) return false;
 	// The converging step fixates a row's lower body only up to the predictor's limit on s
@@ -81,11 +97,12 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 }
 
 bool btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds,
-														  int numManifolds, const btContactSolverInfo& info, btScalar fraction)
+														  int numManifolds, btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
+														  btScalar fraction)
 {
 	BT_PROFILE("btShockPropagationConstraintSolver::correctAfterStep");
 	btClock clock;
-	filterInput(objects, numObjects, manifolds, numManifolds, 0, 0, false);
+	filterInput(objects, numObjects, manifolds, numManifolds, constraints, numConstraints, false);
 	// Sleeping bodies are not moved: they are roots here, as static bodies are.
 	int kept = 0;
 	for (int i = 0; i < m_bodies.size(); ++i)

@@ -30,14 +30,19 @@ void btPositionCorrection::reset(int numBodies, int numLayers, int numPoints)
 	empty.m_angularFactor.setZero();
 	empty.m_shift.setZero();
 	empty.m_turn.setZero();
+	empty.m_change.setIdentity();
 	m_bodies.resize(numBodies, empty);
 	m_fixated.resize(numBodies);
+	m_touching.resize(numBodies);
 	for (int i = 0; i < numBodies; ++i)
 	{
 		m_bodies[i] = empty;
 		m_fixated[i] = 0;
+		m_touching[i] = 0;
 	}
 	m_points.resize(0);
+	m_joints.resize(0);
+	m_carried.resize(0);
 	if (m_points.capacity() < numPoints) m_points.reserve(numPoints);
 	if (m_sorted.capacity() < numPoints) m_sorted.reserve(numPoints);
 	m_numLayers = btMax(1, numLayers);
@@ -67,6 +72,12 @@ void btPositionCorrection::addPoint(int nodeA, int nodeB, const btVector3& point
 	p.m_target = target;
 	p.m_lambda = btScalar(0);
 	p.m_layer = (layer >= 0 && layer < m_numLayers) ? layer : 0;
+}
+
+void btPositionCorrection::addJoint(int nodeA, int nodeB)
+{
+	m_joints.push_back((nodeA >= 0 && m_bodies[nodeA].m_body) ? nodeA : -1);
+	m_joints.push_back((nodeB >= 0 && m_bodies[nodeB].m_body) ? nodeB : -1);
 }
 
 void btPositionCorrection::sweepPoints(int begin, int end)
@@ -147,6 +158,67 @@ void btPositionCorrection::solve(int sweeps, const btStackLayers* layers, btScal
 		if (layers && k < layers->getNumLayers())
 			for (int i = 0; i < layers->getNumFixatedBodies(k); ++i) m_fixated[layers->getFixatedBody(k, i)] = 0;
 	}
+	carryByJoints();
+}
+
+int btPositionCorrection::findHanging(int node)
+{
+	while (m_hanging[node] != node)
+	{
+		m_hanging[node] = m_hanging[m_hanging[node]];
+		node = m_hanging[node];
+	}
+	return node;
+}
+
+void btPositionCorrection::carryByJoints()
+{
+	// The bodies that touch nothing, joined by the joints among them into hanging groups. A group
+	// attached by exactly one joint to the rest of the world, and that to a dynamic body that
+	// touches something and is no lighter than the whole group, moves rigidly with that body:
+	// every joint in the group and the attaching one are left as they were. A group held at two
+	// places (the middle of a bridge between two planks on their supports, a chain anchored to
+	// the ground) is not moved: a rigid motion with one of them would open the other.
+	m_carried.resize(0);
+	m_carriedBy.resize(0);
+	if (m_joints.size() == 0) return;
+	const int n = m_bodies.size();
+	m_hanging.resize(n);
+	m_carrier.resize(n);
+	m_attachments.resize(n);
+	m_hangingMass.resize(n);
+	for (int i = 0; i < n; ++i)
+	{
+		m_hanging[i] = i;
+		m_carrier[i] = -1;
+		m_attachments[i] = 0;
+		m_hangingMass[i] = 0;
+	}
+	for (int j = 0; j + 1 < m_joints.size(); j += 2)
+	{
+		const int a = m_joints[j], b = m_joints[j + 1];
+		if (a >= 0 && b >= 0 && !m_touching[a] && !m_touching[b]) m_hanging[findHanging(a)] = findHanging(b);
+	}
+	for (int j = 0; j + 1 < m_joints.size(); j += 2)
+		for (int side = 0; side < 2; ++side)
+		{
+			const int body = m_joints[j + side], other = m_joints[j + 1 - side];
+			if (body < 0 || m_touching[body] || (other >= 0 && !m_touching[other])) continue;
+			const int root = findHanging(body);
+			++m_attachments[root];
+			m_carrier[root] = other;  // -1: static, kinematic or outside the group
+		}
+	for (int i = 0; i < n; ++i)
+		if (!m_touching[i] && m_bodies[i].m_invMass > btScalar(0)) m_hangingMass[findHanging(i)] += btScalar(1) / m_bodies[i].m_invMass;
+	for (int i = 0; i < n; ++i)
+	{
+		if (m_touching[i]) continue;
+		const int root = findHanging(i);
+		const int carrier = m_carrier[root];
+		if (m_attachments[root] != 1 || carrier < 0 || !(m_bodies[carrier].m_invMass * m_hangingMass[root] <= btScalar(1))) continue;
+		m_carried.push_back(i);
+		m_carriedBy.push_back(carrier);
+	}
 }
 
 void btPositionCorrection::apply()
@@ -154,10 +226,20 @@ void btPositionCorrection::apply()
 	for (int i = 0; i < m_bodies.size(); ++i)
 	{
 		Body& b = m_bodies[i];
+		b.m_change.setIdentity();
 		if (!b.m_body || (b.m_shift.isZero() && b.m_turn.isZero())) continue;
 		btTransform corrected;
 		btTransformUtil::integrateTransform(b.m_body->getWorldTransform(), b.m_shift, b.m_turn, btScalar(1), corrected);
+		b.m_change = corrected * b.m_body->getWorldTransform().inverse();
 		// As Bullet's own integration does: the world inertia follows the new orientation.
 		b.m_body->setCenterOfMassTransform(corrected);
+	}
+	// Carried bodies (no contact rows, so no correction of their own) take their carrier's
+	// change of pose.
+	for (int k = 0; k < m_carried.size(); ++k)
+	{
+		const btTransform& change = m_bodies[m_carriedBy[k]].m_change;
+		btRigidBody* body = m_bodies[m_carried[k]].m_body;
+		body->setCenterOfMassTransform(change * body->getWorldTransform());
 	}
 }

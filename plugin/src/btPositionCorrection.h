@@ -17,6 +17,7 @@ subject to the following restrictions:
 
 #include "LinearMath/btAlignedObjectArray.h"
 #include "LinearMath/btMatrix3x3.h"
+#include "LinearMath/btTransform.h"
 #include "LinearMath/btVector3.h"
 
 class btRigidBody;
@@ -28,7 +29,13 @@ class btStackLayers;
 /// layer by layer bottom-up with each layer's lower bodies fixated (infinite mass; their own
 /// correction, done in a lower layer, is seen by the rows above), or with every body free.
 /// It replaces Bullet's Baumgarte term and split impulse in stacked groups: velocities are not
-/// touched, so no energy enters through the correction. Private to the plugin.
+/// touched, so no energy enters through the correction.
+/// Bodies that touch nothing and hang, by a single joint, from a body the correction moves (a
+/// lamp on a tower, a chain of them) move rigidly with it: its change of pose, the same rotation
+/// about its centre and the same translation, which leaves every joint among them and the one
+/// they hang by as it was, whatever the joints and however large the change (carryByJoints).
+/// Without, each correction of the tower opened the lamp's joint and the joint's own error
+/// reduction chased it (2.4 mm mean against stock's 0.7 mm). Private to the plugin.
 ///
 /// Bodies are the graph nodes 0..n-1 of the group; -1 stands for a static or kinematic body.
 class btPositionCorrection
@@ -44,6 +51,12 @@ public:
 	void addPoint(int nodeA, int nodeB, const btVector3& pointOnA, const btVector3& pointOnB, const btVector3& normalOnB,
 				  btScalar target, int layer);
 	int getNumPoints() const { return m_points.size(); }
+	/// Node i touches another body (it has a contact edge): its contacts, not its joints, decide
+	/// its correction.
+	void markTouching(int node) { m_touching[node] = 1; }
+	bool isTouching(int node) const { return m_touching[node] != 0; }
+	/// A joint between nodes A and B (-1: static, kinematic or outside the group).
+	void addJoint(int nodeA, int nodeB);
 
 	/// Layered (layers given) or global (layers null) projection, that many sweeps per layer. A
 	/// point whose lower body would be fixated moves both bodies where s = (D_A + D_B) / D_free
@@ -69,8 +82,17 @@ private:
 		btMatrix3x3 m_invInertia;
 		btVector3 m_linearFactor, m_angularFactor;
 		btVector3 m_shift, m_turn;  // accumulated correction: translation, rotation vector
+		btTransform m_change;       // apply: the new pose times the old one's inverse
 	};
 	void sweepPoints(int begin, int end);
+	void carryByJoints();
+	int findHanging(int node);
+	btAlignedObjectArray<int> m_joints;   // node pairs
+	btAlignedObjectArray<int> m_carrier;  // carryByJoints: per hanging group (its root), the body it hangs by
+	btAlignedObjectArray<int> m_carried, m_carriedBy;  // the nodes carried, and the node each is carried by
+	btAlignedObjectArray<int> m_hanging, m_attachments;  // carryByJoints: union-find of hanging groups, joints to the rest
+	btAlignedObjectArray<btScalar> m_hangingMass;         // carryByJoints: a group's mass (kg)
+	btAlignedObjectArray<char> m_touching;
 
 	btAlignedObjectArray<Body> m_bodies;
 	btAlignedObjectArray<Point> m_points;

@@ -356,7 +356,8 @@ void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
 				const btScalar fraction = round + 1 < rounds ? settings.m_diagnostics.m_secondCorrectionFraction : btScalar(1);
 				const bool moved = m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
 																   m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
-																   m_dispatcher1->getNumManifolds(), info, fraction);
+																   m_dispatcher1->getNumManifolds(), m_constraints.size() ? &m_constraints[0] : 0,
+																   m_constraints.size(), info, fraction);
 				if (!moved) break;
 			}
 		}
@@ -367,5 +368,6 @@ void btShockPropagationDynamicsWorld::correctionPhase(btScalar timeStep)
 	// Ablation (before issue 38): the step's own points, depths from the new transforms.
 	m_shockSolver->correctAfterStep(objects.size() ? &objects[0] : 0, objects.size(),
 									m_dispatcher1->getNumManifolds() ? m_dispatcher1->getInternalManifoldPointer() : 0,
-									m_dispatcher1->getNumManifolds(), info, settings.m_diagnostics.m_correctionFraction);
+									m_dispatcher1->getNumManifolds(), m_constraints.size() ? &m_constraints[0] : 0, m_constraints.size(), info,
+									settings.m_diagnostics.m_correctionFraction);
 }

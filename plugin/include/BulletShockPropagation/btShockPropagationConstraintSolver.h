@@ -109,7 +109,7 @@ private:
 	/// every manifold of the world, depths recomputed from the new transforms, fraction of each
 	/// depth beyond the slop removed. Returns whether any point was deeper than the slop.
 	bool correctAfterStep(btCollisionObject** objects, int numObjects, btPersistentManifold** manifolds, int numManifolds,
-						  const btContactSolverInfo& info, btScalar fraction);
+						  btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info, btScalar fraction);
 
 	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 					 btTypedConstraint** constraints, int numConstraints, bool countInStatistics);
