@@ -232,6 +232,7 @@ std::vector<RatioCase> ratioCases()
 		{"stack_1000", "stack_1000", {}},
 		{"boxes_3000 (10 s)", "boxes_3000", {}, 600},
 		{"dense_random pile (10 s)", "dense_random", {}, 600},
+		{"basic_demo_block (5 s)", "basic_demo_block", {}, 300},
 	};
 }
 

@@ -53,6 +53,7 @@ const std::vector<SceneEntry>& registry()
 		{"benchmark", "heavy_top_column", "PyBullet's column of 10 unit cubes whose top cube is 1000 times heavier: it stands and gains no energy.", createHeavyTopColumn, heavyTopColumnParams()},
 		{"benchmark", "stack_1000", "BenchmarkDemo's \"1000 stack\": a 12-layer cube pyramid, three 12-row walls and a round tower of 8 rings of 24 (1076 cubes); it stands.", createStack1000, stack1000Params()},
 		{"benchmark", "boxes_3000", "BenchmarkDemo's \"3000 boxes\" at full size: 8 x 8 leaning columns of 47 cubes (3008) dropped in staircases that topple.", createBoxes3000, boxes3000Params()},
+		{"benchmark", "basic_demo_block", "BasicDemo's 5 x 5 x 5 block of 0.2 m cubes dropped 1.9 m onto the ground: it lands flat and stays a block.", createBasicDemoBlock, basicDemoBlockParams()},
 		{"benchmark", "flat_boxes", "Cost baseline without stacks: 20 x 20 cubes side by side on the ground, one layer, at rest or sliding at v0.", createFlatBoxes, flatBoxesParams()},
 	};
 	return table;

@@ -86,6 +86,10 @@ Params boxes3000Params();
 Params stack1000Params();
 Params flatBoxesParams();
 
+// ExampleScenes.cpp
+std::unique_ptr<SceneContent> createBasicDemoBlock(btDiscreteDynamicsWorld& world, const Params& params);
+Params basicDemoBlockParams();
+
 }  // namespace scenes
 
 #endif  // SCENES_SCENE_CATALOG_H
