@@ -14,6 +14,8 @@ subject to the following restrictions:
 
 #include "btBoxFaceCorners.h"
 
+#include "BulletShockPropagation/btShockPropagationSettings.h"
+
 #include "BulletCollision/CollisionDispatch/btCollisionObject.h"
 #include "BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h"
 #include "BulletCollision/CollisionDispatch/btManifoldResult.h"
@@ -22,9 +24,9 @@ subject to the following restrictions:
 
 namespace
 {
-/// A face counts as lying along the manifold's normal within about 8 degrees: beyond that the
-/// pair touches along an edge or at a corner, and its other corners are not near the face.
-const btScalar kFaceAlignment = btScalar(0.99);
+// A face counts as lying along the manifold's normal within about 8 degrees
+// (btShockPropagationNumerics::faceAlignment, cos 8 deg = 0.99): beyond that the pair touches along
+// an edge or at a corner, and its other corners are not near the face.
 
 const btBoxShape* boxOf(const btCollisionObject* object)
 {
@@ -33,7 +35,7 @@ const btBoxShape* boxOf(const btCollisionObject* object)
 }
 
 /// The axis of `box` (at `frame`) whose face looks most along `towards`, with the face's outward
-/// sign; false if no face lies within kFaceAlignment of it.
+/// sign; false if no face lies within btShockPropagationNumerics::faceAlignment() of it.
 bool faceTowards(const btTransform& frame, const btVector3& towards, int& axis, btScalar& sign)
 {
 	btScalar best = 0;
@@ -47,7 +49,7 @@ bool faceTowards(const btTransform& frame, const btVector3& towards, int& axis, 
 		}
 	}
 	sign = best >= btScalar(0) ? btScalar(1) : btScalar(-1);
-	return btFabs(best) >= kFaceAlignment;
+	return btFabs(best) >= btShockPropagationNumerics::faceAlignment();
 }
 }  // namespace
 

@@ -45,11 +45,6 @@ subject to the following restrictions:
 
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
-namespace
-{
-const int kMaxClusterBodies = 64;                // largest cluster whose rows are tested together (clusterSpans)
-}  // namespace
-
 void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodies, const btAlignedObjectArray<int>& heightOfSolverBody)
 {
 	// Fixation stands for the ground holding a body through the bodies under it. A body is
@@ -148,12 +143,12 @@ bool btShockPredictor::clusterSpans(int root)
 	// body of the layer (held by its own supports: J_r u = J_r,a u_a). They fix the cluster where
 	// sum_r J_r^T J_r (6 n x 6 n) has full rank, factored Jacobi-scaled with a single body's
 	// pivot. A cluster without such rows is one body, decided alone. The test costs (6 n)^3 / 6
-	// multiply-adds: at kMaxClusterBodies members 9.4e6, about what the predictor's capped sweeps
+	// multiply-adds: at btShockPropagationNumerics::maxClusterBodies() members 9.4e6, about what the predictor's capped sweeps
 	// (6 passes of 200) over the cluster's rows cost; a larger cluster's rows stay free on both
 	// sides. That is a bound on cost only: fixation orders the predictor's updates and does not
 	// change the coupled problem they converge to.
 	const ClusterNode& node = m_clusterNodes[root];
-	if (node.m_firstRow < 0 || node.m_size > kMaxClusterBodies) return false;
+	if (node.m_firstRow < 0 || node.m_size > btShockPropagationNumerics::maxClusterBodies()) return false;
 	const int size = 6 * node.m_size;
 	m_clusterMatrix.resize(size * size);
 	for (int i = 0; i < size * size; ++i) m_clusterMatrix[i] = 0;

@@ -19,6 +19,7 @@ subject to the following restrictions:
 #include "LinearMath/btMatrix3x3.h"
 
 #include "btCholesky6.h"
+#include "BulletShockPropagation/btShockPropagationSettings.h"
 
 class btStackLayers;
 
@@ -239,9 +240,9 @@ private:
 	void showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed);
 	int sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites);
 	bool heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed);
-	/// Jacobi-scaled pivot above which a direction counts as spanned by a body's rows (1e-3 of its
-	/// diagonal): the span test, clusters, welds and the mobility of a fixated body.
-	static btScalar spanMinPivot() { return btScalar(1e-3); }
+	/// Jacobi-scaled pivot above which a direction counts as spanned by a body's rows
+	/// (btShockPropagationNumerics).
+	static btScalar spanMinPivot() { return btShockPropagationNumerics::spanMinPivot(); }
 	// A fixated body's mobility W' (btFixatedMobility.cpp): the inverse mass left in the
 	// directions its supports do not resist, in linear-linear, linear-angular and angular-angular
 	// blocks; m_mobile: per solver body, its entry in m_mobility, -1 where W' = 0.

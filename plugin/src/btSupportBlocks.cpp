@@ -32,11 +32,6 @@ subject to the following restrictions:
 
 #include "BulletDynamics/Dynamics/btRigidBody.h"
 
-namespace
-{
-const btScalar kBlockMinPivot = btScalar(1e-3);  // Jacobi-scaled pivot: the block's rows span six directions
-}  // namespace
-
 void btShockPredictor::solveBlocks(int layer, const Pools& pools)
 {
 	for (int i = m_layerFreeStart[layer]; i < m_layerFreeStart[layer + 1]; ++i) solveBlock(m_layerFree[i], pools.m_bodies);
@@ -128,7 +123,7 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			for (int i = 0; i < 6; ++i)
 				for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
 		}
-		const bool factored = factor.factor(A, btScalar(0), kBlockMinPivot, true);
+		const bool factored = factor.factor(A, btScalar(0), btShockPropagationNumerics::blockMinPivot(), true);
 		if (cache)
 		{
 			m_blockState[b] = factored ? 1 : 2;

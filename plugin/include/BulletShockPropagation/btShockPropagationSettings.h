@@ -24,6 +24,25 @@ enum
 	BT_SHOCK_ITERATIONS_FROM_WORLD = -1
 };
 
+/// The solver's fixed numerical thresholds: not settings (nothing changes them), listed here so
+/// that every constant of the step is in this header with its unit and its reason.
+struct btShockPropagationNumerics
+{
+	/// Pivot (unitless, of a Jacobi-scaled 6 x 6 factor: each pivot over its diagonal) above which
+	/// a body's support rows count as fixing a direction: the span test of grounding and clusters,
+	/// the welds and a fixated body's mobility (docs/design.md, section 4.2).
+	static btScalar spanMinPivot() { return btScalar(1e-3); }
+	/// The same pivot for a support block: its rows are solved at once only where they span all
+	/// six directions (docs/design.md, section 4.5).
+	static btScalar blockMinPivot() { return btScalar(1e-3); }
+	/// Largest cluster (bodies) whose rows are tested together for grounding: (6 n)^3 / 6 = 9.4e6
+	/// multiply-adds at 64, about the capped sweeps' cost over its rows (docs/design.md, 4.2).
+	static int maxClusterBodies() { return 64; }
+	/// Cosine (unitless) within which a box face counts as facing a contact normal, for keeping
+	/// the corners of a resting box face (D30; docs/design.md, section 11).
+	static btScalar faceAlignment() { return btScalar(0.99); }
+};
+
 /// Switches and constants that exist to reproduce the measurements behind the design decisions
 /// (ablations: turn a decision off and see what it was for) and the solver's tolerances. Each is
 /// set to the value docs/design.md measured; apps are not expected to change them.
