@@ -165,74 +165,31 @@ namespace
 constexpr int kPyramidBase = 8;
 constexpr int kSharedSteps = 180;
 
-/// A world of the given mode that uses the solver it is given (owned by the caller).
-class SolverUser
+/// The shared-solver scene in `scene`: a pyramid of base kPyramidBase, rows 1 cm apart sideways
+/// (no side contacts), each box resting on two below, and a box dropped 1 m onto the top box a
+/// quarter of a box off centre so the pyramid feels a torque.
+void buildPyramidWithDrop(Scene& scene)
 {
-public:
-	SolverUser(Mode mode, btConstraintSolver* solver, int solverMode)
+	scene.addGround();
+	const double pitch = 1.01;
+	for (int row = 0; row < kPyramidBase; ++row)
+		for (int i = 0; i < kPyramidBase - row; ++i)
+			scene.addBox(vec(0.5, 0.5, 0.5), 1.0, vec((i - 0.5 * (kPyramidBase - row - 1)) * pitch, 0.5 + row * (1.0 - kOverlap) - kOverlap, 0));
+	scene.addBox(vec(0.5, 0.5, 0.5), 1.0, vec(0.25, kPyramidBase + 1.5, 0));
+}
+
+/// The states of a scene's dynamic bodies, in the order they were added.
+std::vector<BodyState> dynamicStates(Scene& scene)
+{
+	std::vector<BodyState> s;
+	btCollisionObjectArray& objects = scene.world().getCollisionObjectArray();
+	for (int i = 0; i < objects.size(); ++i)
 	{
-		m_configuration.reset(new btDefaultCollisionConfiguration());
-		m_dispatcher.reset(new btCollisionDispatcher(m_configuration.get()));
-		m_broadphase.reset(new btDbvtBroadphase());
-		if (mode == Mode::World)
-			m_world.reset(new btShockPropagationDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), solver, m_configuration.get()));
-		else
-			m_world.reset(new btDiscreteDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), solver, m_configuration.get()));
-		m_world->setGravity(vec(0, -kGravity, 0));
-		m_world->getSolverInfo().m_solverMode |= solverMode;
-
-		add(new btBoxShape(vec(50, 0.5, 50)), 0, vec(0, -0.5, 0));
-		// Rows 1 cm apart sideways (no side contacts), each box resting on two below.
-		const double pitch = 1.01;
-		for (int row = 0; row < kPyramidBase; ++row)
-			for (int i = 0; i < kPyramidBase - row; ++i)
-				add(new btBoxShape(vec(0.5, 0.5, 0.5)), 1.0,
-					vec((i - 0.5 * (kPyramidBase - row - 1)) * pitch, 0.5 + row * (1.0 - kOverlap) - kOverlap, 0));
-		// Dropped 1 m onto the top box, a quarter of a box off centre so the pyramid feels a torque.
-		add(new btBoxShape(vec(0.5, 0.5, 0.5)), 1.0, vec(0.25, kPyramidBase + 1.5, 0));
+		const btRigidBody* b = btRigidBody::upcast(objects[i]);
+		if (b && b->getInvMass() > 0) s.push_back(stateOf(*b));
 	}
-
-	~SolverUser()
-	{
-		for (auto& b : m_bodies) m_world->removeRigidBody(b.get());
-		m_bodies.clear();
-		m_world.reset();
-	}
-
-	void step()
-	{
-		const btScalar dt = btScalar(kTimeStep);
-		m_world->stepSimulation(dt, 1, dt);
-	}
-
-	std::vector<BodyState> states() const
-	{
-		std::vector<BodyState> s;
-		for (const auto& b : m_bodies)
-			if (b->getInvMass() > 0) s.push_back(stateOf(*b));
-		return s;
-	}
-
-private:
-	void add(btCollisionShape* shape, double mass, const btVector3& position)
-	{
-		m_shapes.emplace_back(shape);
-		btVector3 inertia(0, 0, 0);
-		if (mass > 0) shape->calculateLocalInertia(btScalar(mass), inertia);
-		btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, shape, inertia);
-		info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), position);
-		m_bodies.emplace_back(new btRigidBody(info));
-		m_bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-		m_world->addRigidBody(m_bodies.back().get());
-	}
-
-	std::unique_ptr<btDefaultCollisionConfiguration> m_configuration;
-	std::unique_ptr<btCollisionDispatcher> m_dispatcher;
-	std::unique_ptr<btBroadphaseInterface> m_broadphase;
-	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
-	std::vector<std::unique_ptr<btCollisionShape>> m_shapes;
-	std::vector<std::unique_ptr<btRigidBody>> m_bodies;
-};
+	return s;
+}
 
 btConstraintSolver* newSolver(Mode mode)
 {
@@ -249,14 +206,19 @@ std::array<std::vector<std::vector<BodyState>>, 2> runTwoWorlds(Mode mode, bool 
 	btConstraintSolver* solverB = shared ? solvers[0].get() : solvers[1].get();
 	std::array<std::vector<std::vector<BodyState>>, 2> states;
 	{
-		SolverUser a(mode, solvers[0].get(), solverMode);
-		SolverUser b(mode, solverB, solverMode);
+		Scene a(mode, kTimeStep, vec(0, -kGravity, 0), solvers[0].get());
+		Scene b(mode, kTimeStep, vec(0, -kGravity, 0), solverB);
+		for (Scene* scene : {&a, &b})
+		{
+			scene->world().getSolverInfo().m_solverMode |= solverMode;
+			buildPyramidWithDrop(*scene);
+		}
 		for (int i = 0; i < kSharedSteps; ++i)
 		{
 			a.step();
-			states[0].push_back(a.states());
+			states[0].push_back(dynamicStates(a));
 			b.step();
-			states[1].push_back(b.states());
+			states[1].push_back(dynamicStates(b));
 		}
 	}
 	return states;

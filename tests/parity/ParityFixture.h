@@ -91,11 +91,12 @@ inline void printParity(const std::string& name, const PerMode<std::string>& fig
 			  << figure[Mode::Solver] << std::endl;
 }
 
-/// A Bullet world of one Mode that owns its bodies, shapes and constraints.
+/// A Bullet world of one Mode that owns its bodies, shapes and constraints; and its solver, unless
+/// the caller hands one in (sharedSolver: kept by the caller, of the mode's kind).
 class Scene
 {
 public:
-	explicit Scene(Mode mode, double timeStep = kTimeStep, const btVector3& gravity = vec(0, -kGravity, 0))
+	explicit Scene(Mode mode, double timeStep = kTimeStep, const btVector3& gravity = vec(0, -kGravity, 0), btConstraintSolver* sharedSolver = nullptr)
 		: m_mode(mode), m_timeStep(timeStep)
 	{
 		m_configuration.reset(new btDefaultCollisionConfiguration());
@@ -103,16 +104,15 @@ public:
 		m_broadphase.reset(new btDbvtBroadphase());
 		if (mode == Mode::World)
 		{
-			// The world creates and owns its btShockPropagationConstraintSolver.
-			m_world.reset(new btShockPropagationDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), nullptr, m_configuration.get()));
+			// Without a solver handed in, the world creates and owns its btShockPropagationConstraintSolver.
+			m_world.reset(new btShockPropagationDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), sharedSolver, m_configuration.get()));
 		}
 		else
 		{
-			if (mode == Mode::Solver)
-				m_solver.reset(new btShockPropagationConstraintSolver());
-			else
-				m_solver.reset(new btSequentialImpulseConstraintSolver());
-			m_world.reset(new btDiscreteDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get()));
+			if (!sharedSolver && mode == Mode::Solver) m_solver.reset(new btShockPropagationConstraintSolver());
+			if (!sharedSolver && mode == Mode::Stock) m_solver.reset(new btSequentialImpulseConstraintSolver());
+			m_world.reset(new btDiscreteDynamicsWorld(m_dispatcher.get(), m_broadphase.get(), sharedSolver ? sharedSolver : m_solver.get(),
+													  m_configuration.get()));
 		}
 		m_world->setGravity(gravity);
 	}
