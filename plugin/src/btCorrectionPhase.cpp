@@ -76,16 +76,7 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 	}
 	// The group's joints, for the bodies that hang on them touching nothing.
 	for (int i = 0; i < m_constraints.size(); ++i)
-	{
-		int node[2];
-		for (int side = 0; side < 2; ++side)
-		{
-			const btRigidBody& rb = side ? m_constraints[i]->getRigidBodyB() : m_constraints[i]->getRigidBodyA();
-			const int id = rb.getCompanionId();
-			node[side] = (id >= 0 && id < m_bodies.size() && m_bodies[id] == &rb) ? id : -1;
-		}
-		if (m_constraints[i]->isEnabled()) m_correction->addJoint(node[0], node[1]);
-	}
+		if (m_constraints[i]->isEnabled()) m_correction->addJoint(nodeOf(&m_constraints[i]->getRigidBodyA()), nodeOf(&m_constraints[i]->getRigidBodyB()));
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
 	if (m_correction->getNumPoints() == 0) return false;
 	// The converging step fixates a row's lower body only up to the predictor's limit on s

@@ -223,14 +223,16 @@ void btPositionCorrection::carryByJoints()
 
 void btPositionCorrection::apply()
 {
+	// A body's change of pose is kept only while some body is carried (carryByJoints).
+	const bool carrying = m_carried.size() > 0;
 	for (int i = 0; i < m_bodies.size(); ++i)
 	{
 		Body& b = m_bodies[i];
-		b.m_change.setIdentity();
+		if (carrying) b.m_change.setIdentity();
 		if (!b.m_body || (b.m_shift.isZero() && b.m_turn.isZero())) continue;
 		btTransform corrected;
 		btTransformUtil::integrateTransform(b.m_body->getWorldTransform(), b.m_shift, b.m_turn, btScalar(1), corrected);
-		b.m_change = corrected * b.m_body->getWorldTransform().inverse();
+		if (carrying) b.m_change = corrected * b.m_body->getWorldTransform().inverse();
 		// As Bullet's own integration does: the world inertia follows the new orientation.
 		b.m_body->setCenterOfMassTransform(corrected);
 	}

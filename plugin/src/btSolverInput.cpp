@@ -59,16 +59,18 @@ void btShockPropagationConstraintSolver::filterInput(btCollisionObject** bodies,
 	m_stats.m_numSkippedManifolds += skippedManifolds;
 }
 
+int btShockPropagationConstraintSolver::nodeOf(const btCollisionObject* object) const
+{
+	const int id = object->getCompanionId();
+	return (id >= 0 && id < m_bodies.size() && m_bodies[id] == object) ? id : int(BT_CONTACT_GRAPH_ROOT);
+}
+
 void btShockPropagationConstraintSolver::buildGraph()
 {
 	const int n = m_bodies.size();
 	m_graph.reset(n);
 	// Bullet keeps companion ids at -1 between solves; borrow them as node indices meanwhile.
 	for (int i = 0; i < n; ++i) m_bodies[i]->setCompanionId(i);
-	auto nodeOf = [this](const btCollisionObject* object) {
-		const int id = object->getCompanionId();
-		return (id >= 0 && id < m_bodies.size() && m_bodies[id] == object) ? id : int(BT_CONTACT_GRAPH_ROOT);
-	};
 	m_edgeOfManifold.resize(m_manifolds.size());
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{

@@ -113,6 +113,9 @@ private:
 
 	void filterInput(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
 					 btTypedConstraint** constraints, int numConstraints, bool countInStatistics);
+	/// An object's graph node while the companion ids hold node indices (buildGraph,
+	/// correctPositions), else BT_CONTACT_GRAPH_ROOT.
+	int nodeOf(const btCollisionObject* object) const;
 	void buildGraph();
 	// A group without stacks: Bullet's own solve, warm started from its own impulses.
 	void solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
