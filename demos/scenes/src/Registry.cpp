@@ -45,6 +45,8 @@ const std::vector<SceneEntry>& registry()
 		{"truth", "pushed_stack", "Five boxes stacked on the ground, box friction 1, ground friction 0.5: pushed at the bottom, slides iff F > mu W.", createPushedStack, pushedStackParams()},
 		{"truth", "ledge_column", "Six aligned cubes on a static ledge, their axis 0.2 of an edge past its edge: the column tips about the edge as one rigid body.", createLedgeColumn, ledgeColumnParams()},
 		{"truth", "ramp_stack", "Three boxes stacked on a 20 degree ramp: sticks iff mu >= tan(angle), else slides at g (sin a - mu cos a).", createRampStack, rampStackParams()},
+		{"truth", "shape_column", "Column of 10 equal bodies of one shape (box, hull, prism, cylinder, compound) on a box, plane, mesh or heightfield ground: stands.", createShapeColumn, shapeColumnParams()},
+		{"truth", "round_on_block", "A heavy sphere or lying capsule at rest on a light box on the ground (any ground kind): both stay at rest.", createRoundOnBlock, roundOnBlockParams()},
 		{"truth", "loaded_lintel", "Lintel on two capped columns with a heavy box off centre: the caps share the load by the lever rule.", createLoadedLintel, loadedLintelParams()},
 
 		// benchmark: layouts after Bullet's BenchmarkDemo and PyBullet's tests, with the outcome physics predicts

@@ -39,6 +39,38 @@ inline btVector3 standardBoxHalfExtents() { return btVector3(btScalar(0.5), btSc
 /// footprintHalfWidth)) with combined friction `mu`, names it "ground" and returns it.
 btRigidBody* addGround(SceneContent& content, btScalar footprintHalfWidth, btScalar mu);
 
+/// Shape kinds of the shape grid (src/ShapeKinds.cpp says what each is): a scene's "shape" parameter.
+enum ShapeKind
+{
+	kBox = 0,
+	kHull = 1,
+	kHullFeatures = 2,
+	kHexPrism = 3,
+	kCylinder = 4,
+	kCompound = 5,
+	kCapsule = 6,
+	kSphere = 7,
+};
+/// Ground kinds of the shape grid: a scene's "ground" parameter.
+enum GroundKind
+{
+	kBoxGround = 0,
+	kPlaneGround = 1,
+	kMeshGround = 2,
+	kMeshEdgesGround = 3,
+	kHeightfieldGround = 4,
+};
+const char* shapeKindNames();
+const char* groundKindNames();
+
+/// A body shape of `kind` fitting the half extents `half` (owned by `content`); throws
+/// std::invalid_argument on an unknown kind.
+btCollisionShape* addShapeOf(SceneContent& content, int kind, const btVector3& half);
+
+/// The static ground of `kind` with its top surface at y = 0, at least `footprintHalfWidth` wide
+/// (half width), combined friction `mu`, named "ground"; kind 0 is addGround().
+btRigidBody* addGroundOf(SceneContent& content, int kind, btScalar footprintHalfWidth, btScalar mu);
+
 inline btScalar degreesToRadians(btScalar degrees) { return degrees * SIMD_PI / btScalar(180); }
 
 /// Pure translation.

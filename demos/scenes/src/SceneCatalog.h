@@ -86,6 +86,12 @@ Params boxes3000Params();
 Params stack1000Params();
 Params flatBoxesParams();
 
+// ShapeScenes.cpp
+std::unique_ptr<SceneContent> createShapeColumn(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createRoundOnBlock(btDiscreteDynamicsWorld& world, const Params& params);
+Params shapeColumnParams();
+Params roundOnBlockParams();
+
 // ExampleScenes.cpp
 std::unique_ptr<SceneContent> createBasicDemoBlock(btDiscreteDynamicsWorld& world, const Params& params);
 Params basicDemoBlockParams();

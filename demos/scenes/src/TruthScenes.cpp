@@ -31,6 +31,8 @@ Params harmonicStackParams()
 		{"size", 0.5, "m", "cube edge"},
 		{"mass", 1, "kg", "mass of each cube"},
 		{"mu", 0.6, "-", build::kMuDescription},
+		{"shape", 0, "-", "body shape (0 box, 1 hull, 2 hull+features, 3 hexagonal prism, 4 cylinder, 5 compound)"},
+		{"ground", 0, "-", "ground (0 box, 1 plane, 2 triangle mesh, 3 mesh+internal edges, 4 heightfield)"},
 	};
 }
 
@@ -44,9 +46,12 @@ std::unique_ptr<SceneContent> createHarmonicStack(btDiscreteDynamicsWorld& world
 	build::require(scale < 2, "scale must be < 2 so each cube rests on the one below");
 	const btScalar half = size / 2;
 
+	const int shapeKind = build::countParam(params, "shape", 0);
+	build::require(shapeKind <= build::kCompound, "shape must be 0-5: a stack needs a flat top and bottom");
+
 	auto content = std::make_unique<SceneContent>(world);
-	build::addGround(*content, 4 * size * btScalar(n), mu);
-	btCollisionShape* shape = content->addShape(new btBoxShape(btVector3(half, half, half)));
+	build::addGroundOf(*content, build::countParam(params, "ground", 0), 4 * size * btScalar(n), mu);
+	btCollisionShape* shape = build::addShapeOf(*content, shapeKind, btVector3(half, half, half));
 	btScalar x = 0;
 	btRigidBody* cube = nullptr;
 	for (int level = 0; level < n; ++level)
@@ -83,6 +88,8 @@ Params pushedStackParams()
 		{"mass", 1, "kg", "mass of each box"},
 		{"groundMu", 0.5, "-", "combined friction of the bottom box on the ground"},
 		{"boxMu", 1, "-", "combined friction between two boxes"},
+		{"shape", 0, "-", "body shape (0 box, 1 hull, 2 hull+features, 3 hexagonal prism, 4 cylinder, 5 compound)"},
+		{"ground", 0, "-", "ground (0 box, 1 plane, 2 triangle mesh, 3 mesh+internal edges, 4 heightfield)"},
 	};
 }
 
@@ -94,10 +101,13 @@ std::unique_ptr<SceneContent> createPushedStack(btDiscreteDynamicsWorld& world, 
 	const btScalar groundMu = build::nonNegativeParam(params, "groundMu");
 	const btScalar boxMu = build::positiveParam(params, "boxMu");
 
+	const int shapeKind = build::countParam(params, "shape", 0);
+	build::require(shapeKind <= build::kCompound, "shape must be 0-5: a stack needs a flat top and bottom");
+
 	auto content = std::make_unique<SceneContent>(world);
-	btRigidBody* ground = build::addGround(*content, 0, groundMu);
+	btRigidBody* ground = build::addGroundOf(*content, build::countParam(params, "ground", 0), 0, groundMu);
 	ground->setFriction(staticFrictionFor(groundMu, boxMu));
-	btCollisionShape* shape = content->addShape(new btBoxShape(half));
+	btCollisionShape* shape = build::addShapeOf(*content, shapeKind, half);
 	btRigidBody* box = nullptr;
 	for (int level = 0; level < n; ++level)
 	{

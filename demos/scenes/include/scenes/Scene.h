@@ -66,6 +66,14 @@ public:
 	/// mass in kg (0: static); `friction` is the combined mu this body should have against another body
 	/// of the scene, so the body gets sqrt(friction). Dynamic bodies get DISABLE_DEACTIVATION.
 	btRigidBody* addBody(btCollisionShape* shape, btScalar mass, const btTransform& xf, btScalar friction, btScalar restitution = 0);
+	/// Keeps `object` (a mesh's vertex data, a heightfield's samples, a triangle-info map: what a
+	/// shape points to but does not own) alive until the shapes are gone; returns it.
+	template <class T>
+	T* keep(T* object)
+	{
+		m_kept.emplace_back(object);
+		return object;
+	}
 	/// Adds a constraint to the world; owned from now on.
 	btTypedConstraint* addConstraint(btTypedConstraint* c, bool disableCollisionsBetweenLinkedBodies = true);
 
@@ -94,6 +102,7 @@ private:
 	std::vector<btRigidBody*> m_bodies;
 	std::vector<btTypedConstraint*> m_constraints;
 	std::map<std::string, btRigidBody*> m_names;
+	std::vector<std::shared_ptr<void>> m_kept;  ///< destroyed after the destructor's body has deleted the shapes
 };
 
 /// Builds one scene into `world` from a complete parameter list (see SceneEntry::defaults).
