@@ -39,6 +39,7 @@ subject to the following restrictions:
 
 #include "btBodyChecks.h"
 #include "btBoxFaceCorners.h"
+#include "btContactPatch.h"
 #include "btShockPredictor.h"
 #include "btWithheldReactions.h"
 
@@ -80,6 +81,11 @@ btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContac
 	{
 		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
 		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numBoxFaceCorners += btKeepBoxFaceCorners(*m_manifolds[i], reach);
+	}
+	if (m_settings.m_completeContactPatches)
+	{
+		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
+		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numPatchPoints += btCompleteContactPatch(*m_manifolds[i], reach);
 	}
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;

@@ -18,6 +18,8 @@ subject to the following restrictions:
 #include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
 
 #include "btBodyChecks.h"
+#include "btBoxFaceCorners.h"
+#include "btContactPatch.h"
 #include "btPositionCorrection.h"
 #include "btShockPredictor.h"
 
@@ -127,6 +129,15 @@ bool btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 		m_manifolds.resize(keptManifolds);
 		m_edgeOfManifold.resize(keptManifolds);
 		for (int i = 0; i < keptManifolds; ++i) m_edgeOfManifold[i] = keptEdges[i];
+		// The detection at t + dt found one new point per GJK pair, as the step's did: the
+		// patches are completed as for the solve (D30, D33), so the correction does not turn a
+		// body about a single point.
+		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
+		for (int i = 0; i < keptManifolds; ++i)
+		{
+			if (m_settings.m_keepBoxFaceCorners) btKeepBoxFaceCorners(*m_manifolds[i], reach);
+			if (m_settings.m_completeContactPatches) btCompleteContactPatch(*m_manifolds[i], reach);
+		}
 		moved = correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection, fraction);
 	}
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);

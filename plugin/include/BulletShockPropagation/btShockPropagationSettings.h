@@ -205,6 +205,14 @@ struct btShockPropagationSettings
 	/// on: 0.02-0.96 cm (docs/design.md, D30). Groups without stacks keep Bullet's points.
 	bool m_keepBoxFaceCorners = true;
 
+	/// D33: in a stacked group, a convex face resting on another face (any convex pair but two
+	/// boxes, and convex bodies on a btStaticPlaneShape) gets the points of its whole patch, found
+	/// from the shapes' support functions, where Bullet's GJK/EPA reported one or two of them (it
+	/// finds one new point per step; a column of 10 cylinders pivoted on them). The reach is D30's
+	/// (m_diagnostics.m_boxFaceReachPerFall). Groups without stacks keep Bullet's points
+	/// (docs/design.md, D33).
+	bool m_completeContactPatches = true;
+
 	/// Ablation switches and tolerances (see btShockPropagationDiagnostics); leave as they are
 	/// unless reproducing docs/design.md.
 	btShockPropagationDiagnostics m_diagnostics;

@@ -28,6 +28,7 @@ struct btShockPropagationStatistics
 	int m_numGlobalSweeps = 0;    ///< corrector sweeps (Bullet's own, every body free; they end once converged)
 	int m_numLayerSweeps = 0;     ///< predictor sweeps: per cycle, the most any layer visit ran
 	int m_numBoxFaceCorners = 0;  ///< contact points added where a box face rested on a box (D30)
+	int m_numPatchPoints = 0;     ///< contact points added to other convex patches (D33)
 	int m_numSkippedManifolds = 0;///< manifolds left out (non-finite points, or touching skipped bodies)
 
 	// Wall-clock time per phase (milliseconds).

@@ -1,0 +1,245 @@
+/*
+BulletShockPropagation - velocity-based shock propagation for Bullet
+Copyright (c) 2026 the BulletShockPropagation authors
+
+This software is provided 'as-is', without any express or implied warranty.
+In no event will the authors be held liable for any damages arising from the use of this software.
+Permission is granted to anyone to use this software for any purpose,
+including commercial applications, and to alter it and redistribute it freely,
+subject to the following restrictions:
+1. The origin of this software must not be misrepresented; you must not claim that you wrote the original software. If you use this software in a product, an acknowledgment in the product documentation would be appreciated but is not required.
+2. Altered source versions must be plainly marked as such, and must not be misrepresented as being the original software.
+3. This notice may not be removed or altered from any source distribution.
+*/
+
+#include "btContactPatch.h"
+
+#include "BulletShockPropagation/btShockPropagationSettings.h"
+
+#include "BulletCollision/CollisionDispatch/btCollisionObject.h"
+#include "BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h"
+#include "BulletCollision/CollisionDispatch/btManifoldResult.h"
+#include "BulletCollision/CollisionShapes/btConvexShape.h"
+#include "BulletCollision/CollisionShapes/btPolyhedralConvexShape.h"
+#include "BulletCollision/CollisionShapes/btStaticPlaneShape.h"
+#include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
+
+namespace
+{
+const int kRim = 8;                          // support directions around the normal
+const btScalar kSpread = btScalar(0.5);      // tangent of the directions' tilt from the normal (27 deg)
+
+/// One side of the pair: its rim in world space (a face's corners or points of its edge), or a
+/// flat ground that has no rim and is under every point.
+struct PatchSide
+{
+	bool convex = false;
+	bool flat = false;
+	btVector3 planeNormal;            // a flat side's normal (world)
+	btVector3 rim[kRim];
+	btScalar rimU[kRim], rimV[kRim];  // the rim in the tangent plane's coordinates
+	int rimCount = 0;                 // distinct rim points (in order around the normal)
+};
+
+bool describeSide(const btCollisionObject* object, const btVector3& facing, const btVector3& t1, const btVector3& t2, PatchSide& side)
+{
+	const btCollisionShape* shape = object->getCollisionShape();
+	if (shape->getShapeType() == STATIC_PLANE_PROXYTYPE)
+	{
+		side.flat = true;
+		side.planeNormal = object->getWorldTransform().getBasis() * static_cast<const btStaticPlaneShape*>(shape)->getPlaneNormal();
+		return true;
+	}
+	if (!shape->isConvex()) return false;
+	side.convex = true;
+	const btConvexShape* convex = static_cast<const btConvexShape*>(shape);
+	btScalar margin = convex->getMargin();
+	if (convex->isPolyhedral() && static_cast<const btPolyhedralConvexShape*>(convex)->getConvexPolyhedron()) margin = 0;
+	const btTransform& frame = object->getWorldTransform();
+	for (int k = 0; k < kRim; ++k)
+	{
+		const btScalar angle = btScalar(k) * SIMD_PI / btScalar(4);
+		const btVector3 direction = facing + kSpread * (btCos(angle) * t1 + btSin(angle) * t2);
+		const btVector3 local = convex->localGetSupportingVertexWithoutMargin(direction * frame.getBasis());
+		const btVector3 point = frame * local + facing * margin;
+		if (!(point.length2() < BT_LARGE_FLOAT)) return false;
+		const btScalar u = point.dot(t1), v = point.dot(t2);
+		if (side.rimCount > 0)
+		{
+			const int last = side.rimCount - 1;
+			if (btFabs(u - side.rimU[last]) + btFabs(v - side.rimV[last]) < SIMD_EPSILON * (btScalar(1) + btFabs(u) + btFabs(v))) continue;
+		}
+		side.rim[side.rimCount] = point;
+		side.rimU[side.rimCount] = u;
+		side.rimV[side.rimCount] = v;
+		++side.rimCount;
+	}
+	return true;
+}
+
+/// Area of the side's rim polygon (m^2).
+btScalar rimArea(const PatchSide& side)
+{
+	btScalar area = 0;
+	for (int i = 0; i < side.rimCount; ++i)
+	{
+		const int j = (i + 1) % side.rimCount;
+		area += side.rimU[i] * side.rimV[j] - side.rimU[j] * side.rimV[i];
+	}
+	return btFabs(area) / 2;
+}
+
+/// The unit normal of the side's rim polygon turned along `along` (Newell's sum), or zero if the
+/// rim is not a face (a point or a line) or the side is flat ground.
+btVector3 faceNormal(const PatchSide& side, const btVector3& along)
+{
+	btVector3 sum(0, 0, 0);
+	if (side.flat) return side.planeNormal.dot(along) < 0 ? -side.planeNormal : side.planeNormal;
+	if (!side.convex || side.rimCount < 3) return sum;
+	for (int i = 0; i < side.rimCount; ++i)
+		sum += side.rim[i].cross(side.rim[(i + 1) % side.rimCount]);
+	const btScalar length = sum.length();
+	if (!(length > SIMD_EPSILON)) return btVector3(0, 0, 0);
+	sum /= length;
+	return sum.dot(along) < 0 ? -sum : sum;
+}
+
+/// Whether (u, v) lies inside the side's rim polygon (ordered around n), within `slack` (m).
+bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
+{
+	if (side.flat) return true;
+	if (side.rimCount < 3) return false;  // a point or a line: no face to rest on
+	// The polygon's orientation from its area, so the test holds either way round.
+	btScalar area = 0;
+	for (int i = 0; i < side.rimCount; ++i)
+	{
+		const int j = (i + 1) % side.rimCount;
+		area += side.rimU[i] * side.rimV[j] - side.rimU[j] * side.rimV[i];
+	}
+	if (!(btFabs(area) > slack * slack)) return false;
+	const btScalar orientation = area > 0 ? btScalar(1) : btScalar(-1);
+	for (int i = 0; i < side.rimCount; ++i)
+	{
+		const int j = (i + 1) % side.rimCount;
+		const btScalar eu = side.rimU[j] - side.rimU[i], ev = side.rimV[j] - side.rimV[i];
+		const btScalar length = btSqrt(eu * eu + ev * ev);
+		if (length <= btScalar(0)) continue;
+		const btScalar cross = (eu * (v - side.rimV[i]) - ev * (u - side.rimU[i])) * orientation / length;
+		if (cross < -slack) return false;
+	}
+	return true;
+}
+}  // namespace
+
+int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
+{
+	const int initial = manifold.getNumContacts();
+	if (initial < 1 || !(reach > btScalar(0))) return 0;
+	const btCollisionObject* objectA = manifold.getBody0();
+	const btCollisionObject* objectB = manifold.getBody1();
+	if (objectA->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE && objectB->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE) return 0;  // D30
+	btVector3 n = manifold.getContactPoint(0).m_normalWorldOnB;  // from B into A
+	if (!(btFabs(n.length2() - btScalar(1)) < btScalar(1e-3))) return 0;
+	btVector3 t1, t2;
+	btPlaneSpace1(n, t1, t2);
+	PatchSide sides[2];
+	if (!describeSide(objectA, -n, t1, t2, sides[0]) || !describeSide(objectB, n, t1, t2, sides[1])) return 0;
+	if (!sides[0].convex && !sides[1].convex) return 0;
+	// A face resting on a face: every point takes the face's own normal, and its distance along
+	// it. GJK/EPA's normal is the shapes' closest direction found to its tolerance: between a
+	// cylinder and a 100 m ground box it was off by 2 mrad, and points of one patch with normals
+	// that differ push the body sideways through their friction rows.
+	// The reference face: a static body's (the ground does not tilt), else the larger face, as
+	// face clipping takes it.
+	const btVector3 faceA = faceNormal(sides[0], n), faceB = faceNormal(sides[1], n);
+	btVector3 face = faceB;
+	if (face.isZero() || (!faceA.isZero() && (objectA->isStaticOrKinematicObject() ? true : !objectB->isStaticOrKinematicObject() && rimArea(sides[0]) > rimArea(sides[1]))))
+		face = faceA;
+	if (!face.isZero() && face.dot(n) >= btShockPropagationNumerics::faceAlignment() && face.dot(n) < btScalar(1))
+	{
+		n = face;
+		for (int j = 0; j < initial; ++j)
+		{
+			btManifoldPoint& p = manifold.getContactPoint(j);
+			const btVector3 onA = p.getPositionWorldOnA();
+			const btScalar distance = (onA - p.getPositionWorldOnB()).dot(n);
+			p.m_normalWorldOnB = n;
+			p.m_distance1 = distance;
+			p.m_positionWorldOnB = onA - n * distance;
+			p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
+		}
+		btPlaneSpace1(n, t1, t2);
+		sides[0] = PatchSide();
+		sides[1] = PatchSide();
+		describeSide(objectA, -n, t1, t2, sides[0]);
+		describeSide(objectB, n, t1, t2, sides[1]);
+	}
+	if (initial >= MANIFOLD_CACHE_SIZE) return 0;
+	const btManifoldPoint reference = manifold.getContactPoint(0);
+	const btScalar breaking = manifold.getContactBreakingThreshold();
+	const btScalar slack = btScalar(1e-3) * breaking;
+
+	// Candidates: rim points of either side within reach of the other's plane and over its face.
+	btVector3 candidateA[2 * kRim];
+	btScalar candidateDistance[2 * kRim];
+	int numCandidates = 0;
+	for (int s = 0; s < 2; ++s)
+	{
+		const PatchSide& side = sides[s];
+		const PatchSide& other = sides[1 - s];
+		const btVector3 otherPoint = s == 0 ? reference.getPositionWorldOnB() : reference.getPositionWorldOnA();
+		for (int k = 0; k < side.rimCount; ++k)
+		{
+			// Distance between the faces at this point, positive apart (A above B along n).
+			const btScalar distance = s == 0 ? (side.rim[k] - otherPoint).dot(n) : (otherPoint - side.rim[k]).dot(n);
+			if (!(distance <= reach && distance >= -breaking)) continue;
+			if (!over(other, side.rimU[k], side.rimV[k], slack)) continue;
+			candidateA[numCandidates] = s == 0 ? side.rim[k] : side.rim[k] + n * distance;
+			candidateDistance[numCandidates] = distance;
+			++numCandidates;
+		}
+	}
+	// Farthest first: each added point is the candidate farthest from every point there.
+	int added = 0;
+	const btScalar sameSpot2 = breaking * breaking;
+	while (manifold.getNumContacts() < MANIFOLD_CACHE_SIZE)
+	{
+		int best = -1;
+		btScalar bestGap = sameSpot2;
+		for (int c = 0; c < numCandidates; ++c)
+		{
+			btScalar gap = BT_LARGE_FLOAT;
+			for (int j = 0; j < manifold.getNumContacts(); ++j) gap = btMin(gap, (manifold.getContactPoint(j).getPositionWorldOnA() - candidateA[c]).length2());
+			if (gap > bestGap)
+			{
+				bestGap = gap;
+				best = c;
+			}
+		}
+		if (best < 0) break;
+		const btVector3 onA = candidateA[best];
+		const btVector3 onB = onA - n * candidateDistance[best];
+		btManifoldPoint point = reference;  // the pair's combined coefficients, flags and frames
+		point.m_localPointA = objectA->getWorldTransform().invXform(onA);
+		point.m_localPointB = objectB->getWorldTransform().invXform(onB);
+		point.m_positionWorldOnA = onA;
+		point.m_positionWorldOnB = onB;
+		point.m_distance1 = candidateDistance[best];
+		point.m_lifeTime = 0;
+		point.m_userPersistentData = 0;
+		point.m_appliedImpulse = 0;
+		point.m_prevRHS = 0;
+		point.m_appliedImpulseLateral1 = 0;
+		point.m_appliedImpulseLateral2 = 0;
+		point.m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+		if (gContactAddedCallback && ((objectA->getCollisionFlags() | objectB->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK))
+		{
+			const btCollisionObjectWrapper wrapA(0, objectA->getCollisionShape(), objectA, objectA->getWorldTransform(), point.m_partId0, point.m_index0);
+			const btCollisionObjectWrapper wrapB(0, objectB->getCollisionShape(), objectB, objectB->getWorldTransform(), point.m_partId1, point.m_index1);
+			(*gContactAddedCallback)(point, &wrapA, point.m_partId0, point.m_index0, &wrapB, point.m_partId1, point.m_index1);
+		}
+		manifold.addManifoldPoint(point);
+		++added;
+	}
+	return added;
+}
