@@ -19,6 +19,7 @@ subject to the following restrictions:
 #include "BulletCollision/CollisionDispatch/btCollisionObject.h"
 #include "BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h"
 #include "BulletCollision/CollisionDispatch/btManifoldResult.h"
+#include "BulletCollision/CollisionShapes/btCompoundShape.h"
 #include "BulletCollision/CollisionShapes/btConvexShape.h"
 #include "BulletCollision/CollisionShapes/btPolyhedralConvexShape.h"
 #include "BulletCollision/CollisionShapes/btStaticPlaneShape.h"
@@ -41,13 +42,27 @@ struct PatchSide
 	int rimCount = 0;                 // distinct rim points (in order around the normal)
 };
 
-bool describeSide(const btCollisionObject* object, const btVector3& facing, const btVector3& t1, const btVector3& t2, PatchSide& side)
+/// The shape a manifold of `object` touches and its world frame: the body's shape, or for a
+/// btCompoundShape the child `childIndex` (Bullet's compound algorithms keep one manifold per child
+/// pair and mark its points with the child's index).
+bool partOf(const btCollisionObject* object, int childIndex, const btCollisionShape*& shape, btTransform& frame)
 {
-	const btCollisionShape* shape = object->getCollisionShape();
+	shape = object->getCollisionShape();
+	frame = object->getWorldTransform();
+	if (shape->getShapeType() != COMPOUND_SHAPE_PROXYTYPE) return true;
+	const btCompoundShape* compound = static_cast<const btCompoundShape*>(shape);
+	if (childIndex < 0 || childIndex >= compound->getNumChildShapes()) return false;
+	frame = frame * compound->getChildTransform(childIndex);
+	shape = compound->getChildShape(childIndex);
+	return true;
+}
+
+bool describeSide(const btCollisionShape* shape, const btTransform& frame, const btVector3& facing, const btVector3& t1, const btVector3& t2, PatchSide& side)
+{
 	if (shape->getShapeType() == STATIC_PLANE_PROXYTYPE)
 	{
 		side.flat = true;
-		side.planeNormal = object->getWorldTransform().getBasis() * static_cast<const btStaticPlaneShape*>(shape)->getPlaneNormal();
+		side.planeNormal = frame.getBasis() * static_cast<const btStaticPlaneShape*>(shape)->getPlaneNormal();
 		return true;
 	}
 	if (!shape->isConvex()) return false;
@@ -55,7 +70,6 @@ bool describeSide(const btCollisionObject* object, const btVector3& facing, cons
 	const btConvexShape* convex = static_cast<const btConvexShape*>(shape);
 	btScalar margin = convex->getMargin();
 	if (convex->isPolyhedral() && static_cast<const btPolyhedralConvexShape*>(convex)->getConvexPolyhedron()) margin = 0;
-	const btTransform& frame = object->getWorldTransform();
 	for (int k = 0; k < kRim; ++k)
 	{
 		const btScalar angle = btScalar(k) * SIMD_PI / btScalar(4);
@@ -75,6 +89,19 @@ bool describeSide(const btCollisionObject* object, const btVector3& facing, cons
 		++side.rimCount;
 	}
 	return true;
+}
+
+/// Area of the convex hull of four points (u, v) of the tangent plane (m^2): the largest of the
+/// three quadrilaterals through them and the four triangles (one point inside the others').
+btScalar hullArea4(const btScalar* u, const btScalar* v)
+{
+	auto twice = [&](int a, int b, int c) { return btFabs((u[b] - u[a]) * (v[c] - v[a]) - (u[c] - u[a]) * (v[b] - v[a])); };
+	auto quad = [&](int a, int b, int c, int d) {
+		return btFabs(u[a] * v[b] - u[b] * v[a] + u[b] * v[c] - u[c] * v[b] + u[c] * v[d] - u[d] * v[c] + u[d] * v[a] - u[a] * v[d]);
+	};
+	btScalar best = btMax(btMax(quad(0, 1, 2, 3), quad(0, 1, 3, 2)), quad(0, 2, 1, 3));
+	best = btMax(best, btMax(btMax(twice(0, 1, 2), twice(0, 1, 3)), btMax(twice(0, 2, 3), twice(1, 2, 3))));
+	return best / 2;
 }
 
 /// Area of the side's rim polygon (m^2).
@@ -138,12 +165,20 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 	const btCollisionObject* objectA = manifold.getBody0();
 	const btCollisionObject* objectB = manifold.getBody1();
 	if (objectA->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE && objectB->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE) return 0;  // D30
+	// The two parts in touch: one child pair for a compound (every point names the same children).
+	const int childA = manifold.getContactPoint(0).m_index0, childB = manifold.getContactPoint(0).m_index1;
+	for (int j = 1; j < initial; ++j)
+		if (manifold.getContactPoint(j).m_index0 != childA || manifold.getContactPoint(j).m_index1 != childB) return 0;
+	const btCollisionShape* shapeA;
+	const btCollisionShape* shapeB;
+	btTransform frameA, frameB;
+	if (!partOf(objectA, childA, shapeA, frameA) || !partOf(objectB, childB, shapeB, frameB)) return 0;
 	btVector3 n = manifold.getContactPoint(0).m_normalWorldOnB;  // from B into A
 	if (!(btFabs(n.length2() - btScalar(1)) < btScalar(1e-3))) return 0;
 	btVector3 t1, t2;
 	btPlaneSpace1(n, t1, t2);
 	PatchSide sides[2];
-	if (!describeSide(objectA, -n, t1, t2, sides[0]) || !describeSide(objectB, n, t1, t2, sides[1])) return 0;
+	if (!describeSide(shapeA, frameA, -n, t1, t2, sides[0]) || !describeSide(shapeB, frameB, n, t1, t2, sides[1])) return 0;
 	if (!sides[0].convex && !sides[1].convex) return 0;
 	// A face resting on a face: every point takes the face's own normal, and its distance along
 	// it. GJK/EPA's normal is the shapes' closest direction found to its tolerance: between a
@@ -171,10 +206,9 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 		btPlaneSpace1(n, t1, t2);
 		sides[0] = PatchSide();
 		sides[1] = PatchSide();
-		describeSide(objectA, -n, t1, t2, sides[0]);
-		describeSide(objectB, n, t1, t2, sides[1]);
+		describeSide(shapeA, frameA, -n, t1, t2, sides[0]);
+		describeSide(shapeB, frameB, n, t1, t2, sides[1]);
 	}
-	if (initial >= MANIFOLD_CACHE_SIZE) return 0;
 	const btManifoldPoint reference = manifold.getContactPoint(0);
 	const btScalar breaking = manifold.getContactBreakingThreshold();
 	const btScalar slack = btScalar(1e-3) * breaking;
@@ -199,32 +233,17 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 			++numCandidates;
 		}
 	}
-	// Farthest first: each added point is the candidate farthest from every point there.
-	int added = 0;
-	const btScalar sameSpot2 = breaking * breaking;
-	while (manifold.getNumContacts() < MANIFOLD_CACHE_SIZE)
-	{
-		int best = -1;
-		btScalar bestGap = sameSpot2;
-		for (int c = 0; c < numCandidates; ++c)
-		{
-			btScalar gap = BT_LARGE_FLOAT;
-			for (int j = 0; j < manifold.getNumContacts(); ++j) gap = btMin(gap, (manifold.getContactPoint(j).getPositionWorldOnA() - candidateA[c]).length2());
-			if (gap > bestGap)
-			{
-				bestGap = gap;
-				best = c;
-			}
-		}
-		if (best < 0) break;
-		const btVector3 onA = candidateA[best];
-		const btVector3 onB = onA - n * candidateDistance[best];
-		btManifoldPoint point = reference;  // the pair's combined coefficients, flags and frames
+	// A new point at candidate c: the pair's combined coefficients, flags and frames from the
+	// manifold's first point, the app's callback run where a body asks for it.
+	auto makePoint = [&](int c) {
+		const btVector3 onA = candidateA[c];
+		const btVector3 onB = onA - n * candidateDistance[c];
+		btManifoldPoint point = reference;
 		point.m_localPointA = objectA->getWorldTransform().invXform(onA);
 		point.m_localPointB = objectB->getWorldTransform().invXform(onB);
 		point.m_positionWorldOnA = onA;
 		point.m_positionWorldOnB = onB;
-		point.m_distance1 = candidateDistance[best];
+		point.m_distance1 = candidateDistance[c];
 		point.m_lifeTime = 0;
 		point.m_userPersistentData = 0;
 		point.m_appliedImpulse = 0;
@@ -238,8 +257,81 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 			const btCollisionObjectWrapper wrapB(0, objectB->getCollisionShape(), objectB, objectB->getWorldTransform(), point.m_partId1, point.m_index1);
 			(*gContactAddedCallback)(point, &wrapA, point.m_partId0, point.m_index0, &wrapB, point.m_partId1, point.m_index1);
 		}
-		manifold.addManifoldPoint(point);
+		return point;
+	};
+	const btScalar sameSpot2 = breaking * breaking;
+	auto gapToPoints = [&](int c) {
+		btScalar gap = BT_LARGE_FLOAT;
+		for (int j = 0; j < manifold.getNumContacts(); ++j) gap = btMin(gap, (manifold.getContactPoint(j).getPositionWorldOnA() - candidateA[c]).length2());
+		return gap;
+	};
+
+	// Fill, farthest first: each added point is the candidate farthest from every point there.
+	int added = 0;
+	while (manifold.getNumContacts() < MANIFOLD_CACHE_SIZE)
+	{
+		int best = -1;
+		btScalar bestGap = sameSpot2;
+		for (int c = 0; c < numCandidates; ++c)
+		{
+			const btScalar gap = gapToPoints(c);
+			if (gap > bestGap)
+			{
+				bestGap = gap;
+				best = c;
+			}
+		}
+		if (best < 0) break;
+		manifold.addManifoldPoint(makePoint(best));
 		++added;
+	}
+
+	// Spread: a full manifold whose points cover a small part of the patch (Bullet keeps each new
+	// GJK point, and replaces the point that leaves the largest area with it, which may leave
+	// three rim points and an inner one: a cylinder then rests on a triangle through its own
+	// centre) trades a point for a candidate while that enlarges the points' hull by 1%, the
+	// deepest point kept as Bullet keeps it.
+	if (manifold.getNumContacts() == MANIFOLD_CACHE_SIZE)
+	{
+		for (int round = 0; round < MANIFOLD_CACHE_SIZE; ++round)
+		{
+			btScalar u[MANIFOLD_CACHE_SIZE], v[MANIFOLD_CACHE_SIZE];
+			int deepest = 0;
+			for (int j = 0; j < MANIFOLD_CACHE_SIZE; ++j)
+			{
+				const btManifoldPoint& p = manifold.getContactPoint(j);
+				u[j] = p.getPositionWorldOnA().dot(t1);
+				v[j] = p.getPositionWorldOnA().dot(t2);
+				if (p.getDistance() < manifold.getContactPoint(deepest).getDistance()) deepest = j;
+			}
+			const btScalar current = hullArea4(u, v);
+			btScalar bestArea = current * btScalar(1.01) + SIMD_EPSILON;
+			int bestCandidate = -1, bestSlot = -1;
+			for (int c = 0; c < numCandidates; ++c)
+			{
+				if (!(gapToPoints(c) > sameSpot2)) continue;
+				for (int j = 0; j < MANIFOLD_CACHE_SIZE; ++j)
+				{
+					if (j == deepest) continue;
+					const btScalar keepU = u[j], keepV = v[j];
+					u[j] = candidateA[c].dot(t1);
+					v[j] = candidateA[c].dot(t2);
+					const btScalar area = hullArea4(u, v);
+					u[j] = keepU;
+					v[j] = keepV;
+					if (area > bestArea)
+					{
+						bestArea = area;
+						bestCandidate = c;
+						bestSlot = j;
+					}
+				}
+			}
+			if (bestCandidate < 0) break;
+			manifold.removeContactPoint(bestSlot);  // Bullet's own removal: the app's destroyed callback runs
+			manifold.addManifoldPoint(makePoint(bestCandidate));
+			++added;
+		}
 	}
 	return added;
 }

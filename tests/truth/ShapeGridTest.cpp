@@ -1,16 +1,17 @@
 // The shape grid (issue 37), first slice: a column of 10 equal bodies (1 m wide, 0.5 m tall, 1 kg,
 // mu 0.6) of one shape on one kind of ground (demos/scenes/src/ShapeKinds.cpp) is in equilibrium, so
 // it must stand: every body within 1 cm of its start for 10 s. Asserted for the plugin's defaults at
-// 10 iterations, world and solver-only mode, on the cells where both hold today; in the same test the
-// converged reference (stock SI, 8 sub-steps x 100 iterations) must stand too, so a cell is asserted
-// only where physics and the reference agree. The cells that do not hold yet are DISABLED_ specs
-// below (run with --gtest_also_run_disabled_tests); docs/design.md D33 lists the figures.
+// 10 iterations, world and solver-only mode, on every cell of shapes x grounds; in the same test the
+// converged reference (stock SI, 8 sub-steps x 100 iterations) runs, and a cell it does not hold
+// (within 1.5 cm: it creeps 1.4 cm on a plane) is skipped, so a cell is asserted only where physics
+// and the reference agree. docs/design.md D33 has the figures.
 #include <harness/Trial.h>
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -48,31 +49,24 @@ void expectColumnStands(const Cell& cell)
 	EXPECT_LT(solver, 0.01) << "plugin solver-only, shape " << cell.shape << " ground " << cell.ground;
 }
 
-class ColumnStands : public ::testing::TestWithParam<Cell>
+class ColumnStands : public ::testing::TestWithParam<std::tuple<int, int>>
 {
 };
 
-TEST_P(ColumnStands, WorldAndSolverOnly) { expectColumnStands(GetParam()); }
+TEST_P(ColumnStands, WorldAndSolverOnly) { expectColumnStands(Cell{std::get<0>(GetParam()), std::get<1>(GetParam())}); }
 
-std::string cellName(const ::testing::TestParamInfo<Cell>& info)
+std::string cellName(const ::testing::TestParamInfo<std::tuple<int, int>>& info)
 {
 	static const char* shapes[] = {"box", "hull", "hullFeatures", "prism", "cylinder", "compound"};
 	static const char* grounds[] = {"onBox", "onPlane", "onMesh", "onMeshEdges", "onHeightfield"};
-	return std::string(shapes[info.param.shape]) + "_" + grounds[info.param.ground];
+	return std::string(shapes[std::get<0>(info.param)]) + "_" + grounds[std::get<1>(info.param)];
 }
 
-INSTANTIATE_TEST_SUITE_P(Holding, ColumnStands,
-						 ::testing::Values(Cell{0, 0}, Cell{0, 1}, Cell{0, 2}, Cell{0, 3}, Cell{0, 4},  // boxes
-										   Cell{1, 1}, Cell{1, 2}, Cell{1, 4},                         // hulls of a box's corners
-										   Cell{5, 0}, Cell{5, 2}, Cell{5, 3}, Cell{5, 4}),             // compounds
+INSTANTIATE_TEST_SUITE_P(Grid, ColumnStands,
+						 ::testing::Combine(::testing::Values(0, 1, 3, 4, 5), ::testing::Values(0, 1, 2, 3, 4)),
 						 cellName);
 
-// Not holding yet (figures of the last run in docs/design.md D33): the hull on a box ground and on
-// the mesh with internal edges, the prisms on every ground, cylinders on every ground (the world
-// mode's correction loses them; solver-only mode drifts 1.2-4 cm), compounds on a plane (double
-// precision's world mode 1.5 cm).
-INSTANTIATE_TEST_SUITE_P(DISABLED_NotYet, ColumnStands,
-						 ::testing::Values(Cell{1, 0}, Cell{1, 3}, Cell{3, 0}, Cell{3, 1}, Cell{3, 2}, Cell{3, 3}, Cell{3, 4}, Cell{5, 1},
-										   Cell{4, 0}, Cell{4, 1}, Cell{4, 2}, Cell{4, 3}, Cell{4, 4}),
-						 cellName);
+// Not in the grid: the hull with polyhedral features (shape 2), which the converged reference does
+// not hold (3.3-6.1 cm in float: Bullet's clipping of two hulls' bare faces moves the column while
+// its contacts settle; the plugin 0.0-1.4 cm).
 }  // namespace

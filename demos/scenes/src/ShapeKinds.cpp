@@ -5,8 +5,8 @@
 // Shapes (a body fitting half extents h, its bottom face or lowest point at -h.y):
 //   0 btBoxShape(h)
 //   1 btConvexHullShape of the box's 8 corners moved in by the margin (GJK/EPA, one new point per step)
-//   2 the box's 8 corners at h with initializePolyhedralFeatures (Bullet's polyhedral clipping of the
-//     bare faces, a full patch)
+//   2 the box's 8 corners at h, margin 0, with initializePolyhedralFeatures (Bullet's polyhedral
+//     clipping of the bare faces, a full patch)
 //   3 hexagonal prism, btConvexHullShape, circumradius h.x, half height h.y (margin included)
 //   4 btCylinderShape(h): radius h.x, axis y
 //   5 btCompoundShape of two boxes (h.x / 2, h.y, h.z) side by side: a body made of parts
@@ -54,9 +54,11 @@ bool adjustInternalEdges(btManifoldPoint& cp, const btCollisionObjectWrapper* w0
 btCollisionShape* boxHull(const btVector3& h, bool features)
 {
 	btConvexHullShape* hull = new btConvexHullShape();
-	// GJK rounds the points out by the margin, so they sit a margin inside h; Bullet's polyhedral
-	// clipping (features) uses the bare faces, so then they sit at h.
-	const btVector3 p = features ? h : h - btVector3(1, 1, 1) * hull->getMargin();
+	// GJK rounds the points out by the margin, so they sit a margin inside h. Bullet's polyhedral
+	// clipping (features, both bodies) uses the bare faces while GJK against the ground still adds
+	// the margin, so the features hull gets margin 0 and its points at h: one surface for both.
+	if (features) hull->setMargin(0);
+	const btVector3 p = h - btVector3(1, 1, 1) * hull->getMargin();
 	for (int i = 0; i < 8; ++i)
 		hull->addPoint(btVector3((i & 1) ? p.x() : -p.x(), (i & 2) ? p.y() : -p.y(), (i & 4) ? p.z() : -p.z()), false);
 	hull->recalcLocalAabb();
@@ -151,9 +153,10 @@ btRigidBody* addGroundOf(SceneContent& content, int kind, btScalar footprintHalf
 	else if (kind == kHeightfieldGround)
 	{
 		const int cells = gridCells(halfWidth);
-		std::vector<float>* heights = content.keep(new std::vector<float>(size_t(cells + 1) * size_t(cells + 1), 0.0f));
+		std::vector<btScalar>* heights = content.keep(new std::vector<btScalar>(size_t(cells + 1) * size_t(cells + 1), btScalar(0)));
 		// Samples at 0 between bounds -1 and 1: Bullet centres the shape on its bounds, so its
-		// surface is at the body's origin.
+		// surface is at the body's origin. The samples are btScalar: this (legacy) constructor
+		// takes PHY_FLOAT to mean btScalar, so float samples read as garbage in a double build.
 		btHeightfieldTerrainShape* field = new btHeightfieldTerrainShape(cells + 1, cells + 1, heights->data(), 1, -1, 1, 1, PHY_FLOAT, false);
 		field->setLocalScaling(btVector3(kCell, 1, kCell));
 		shape = content.addShape(field);

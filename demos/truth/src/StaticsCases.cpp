@@ -469,18 +469,21 @@ void addLeverCases(std::vector<TruthCase>& cases)
 }
 }  // namespace
 
-PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction)
+PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction, const Overrides& sceneOverrides)
 {
-	harness::Trial trial(solver, "pushed_stack", {{"n", 5}, {"groundMu", kPushGroundMu}, {"boxMu", 1.0}});
+	Overrides overrides = {{"n", 5}, {"groundMu", kPushGroundMu}, {"boxMu", 1.0}};
+	overrides.insert(overrides.end(), sceneOverrides.begin(), sceneOverrides.end());  // later entries win
+	harness::Trial trial(solver, "pushed_stack", overrides);
 	const std::vector<btRigidBody*>& boxes = trial.bodies();
 	btRigidBody* bottom = trial.scene().named("bottom");
 	double mass = 0;
 	for (const btRigidBody* b : boxes) mass += massOf(b);
 	const double weight = mass * kGravity;
+	const double groundMu = trial.scene().facts.at("groundMu");  // kPushGroundMu unless overridden
 	PushedStack p;
-	p.force = capacityFraction * kPushGroundMu * weight;  // N, along +x
+	p.force = capacityFraction * groundMu * weight;  // N, along +x
 	const bool slides = capacityFraction > 1;
-	p.expected = slides ? (p.force - kPushGroundMu * weight) / mass : 0;
+	p.expected = slides ? (p.force - groundMu * weight) / mass : 0;
 	const std::vector<btVector3> start = positions(boxes);
 	const btVector3 bottomStart = bottom->getCenterOfMassPosition();
 	std::vector<double> t, x;

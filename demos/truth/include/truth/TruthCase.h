@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace truth
@@ -59,7 +60,10 @@ struct PushedStack
 };
 /// The pushed stack of the truth suite (5 boxes of 1 kg, box-ground mu 0.5, box-box mu 1) pushed at
 /// the bottom box with capacityFraction times mu W: 2 s when that exceeds 1 (it slides), else 3 s.
-PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction);
+/// sceneOverrides go to the scene pushed_stack after the suite's own values (so they win), e.g.
+/// {{"shape", 4}, {"ground", 2}} (tests/truth/PushedGridTest.cpp); mu is the scene's groundMu.
+PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction,
+							   const std::vector<std::pair<std::string, double>>& sceneOverrides = {});
 
 /// Cases defined in src/StaticsCases.cpp and src/DynamicsCases.cpp.
 void addStaticsCases(std::vector<TruthCase>& cases);

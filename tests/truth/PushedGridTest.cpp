@@ -1,0 +1,136 @@
+// The shape grid (issue 37), the pushed stack: the truth case PushedStack (5 bodies of 1 kg stacked on
+// the ground, box-ground mu 0.5, box-box mu 1, pushed at the bottom body with a fraction of mu W) built
+// from every shape with a flat top and bottom on every kind of ground (demos/scenes/src/ShapeKinds.cpp).
+// Coulomb does not care about the shape: pushed with 1.4 mu W the stack slides as one body at
+// (F - mu W) / M (the acceleration within the truth case's 10%, no body more than 1 cm from where the
+// bottom one carries it); pushed with 0.6 mu W it stays at rest (no body drifts 1 cm). Hexagonal prisms
+// and cylinders differ from boxes in inertia and contact geometry, not in that statement.
+// Asserted for the plugin's defaults at 10 iterations, world and solver-only mode, on the cells where
+// both hold today; in the same test the converged reference (stock SI, 8 sub-steps x 100 iterations)
+// must hold the statement too, so a cell is asserted only where physics and the reference agree. Stock
+// SI at 10 iterations is printed beside them, never asserted. The cells that do not hold yet are
+// DISABLED_ specs below (run with --gtest_also_run_disabled_tests).
+#include <truth/TruthCase.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace
+{
+constexpr double kRateTolerance = 0.1;  // the truth case's: the acceleration within 10% of Coulomb's
+constexpr double kTogether = 0.01;      // m, the truth case's "together" and "at rest"
+
+struct Cell
+{
+	int shape;        ///< 0 box, 1 hull, 3 hexagonal prism, 4 cylinder, 5 compound
+	int ground;       ///< 0 box, 1 plane, 2 mesh, 3 mesh + internal edges, 4 heightfield
+	double fraction;  ///< the push in units of mu W: 1.4 slides, 0.6 stays
+};
+
+bool slides(const Cell& cell) { return cell.fraction > 1; }
+
+truth::PushedStack measure(harness::SolverKind kind, int iterations, int substeps, const Cell& cell)
+{
+	harness::SolverSpec spec;
+	spec.kind = kind;
+	spec.iterations = iterations;
+	spec.substeps = substeps;
+	return truth::measurePushedStack(spec, cell.fraction, {{"shape", cell.shape}, {"ground", cell.ground}});
+}
+
+/// The physics statement of the cell, as the truth case PushedStack states it.
+bool holds(const truth::PushedStack& p, const Cell& cell)
+{
+	if (p.nonFinite) return false;
+	if (!slides(cell)) return p.maxDrift < kTogether;
+	return std::fabs(p.acceleration - p.expected) <= kRateTolerance * p.expected && p.apart < kTogether;
+}
+
+std::string figures(const truth::PushedStack& p, const Cell& cell)
+{
+	char buffer[200];
+	std::snprintf(buffer, sizeof buffer, "a %.3f (Coulomb %.3f) apart %.4f drift %.4f%s %s", p.acceleration, p.expected, p.apart,
+				  p.maxDrift, p.nonFinite ? " non-finite" : "", holds(p, cell) ? "holds" : "FAILS");
+	return buffer;
+}
+
+void expectCoulomb(const Cell& cell)
+{
+	const truth::PushedStack reference = measure(harness::SolverKind::StockSI, 100, 8, cell);
+	const truth::PushedStack stock = measure(harness::SolverKind::StockSI, 10, 1, cell);
+	const truth::PushedStack world = measure(harness::SolverKind::ShockWorld, 10, 1, cell);
+	const truth::PushedStack solver = measure(harness::SolverKind::ShockSolverOnly, 10, 1, cell);
+	std::printf("GRID | pushed_stack shape %d ground %d F %.1f mu W (%s) | reference: %s | stock SI 10: %s | world: %s | solver-only: %s\n",
+				cell.shape, cell.ground, cell.fraction, slides(cell) ? "slides" : "stays", figures(reference, cell).c_str(),
+				figures(stock, cell).c_str(), figures(world, cell).c_str(), figures(solver, cell).c_str());
+	std::fflush(stdout);
+	if (!holds(reference, cell)) GTEST_SKIP() << "the reference does not hold this cell: " << figures(reference, cell);
+	EXPECT_TRUE(holds(world, cell)) << "plugin world, shape " << cell.shape << " ground " << cell.ground << ": " << figures(world, cell);
+	EXPECT_TRUE(holds(solver, cell)) << "plugin solver-only, shape " << cell.shape << " ground " << cell.ground << ": "
+									 << figures(solver, cell);
+}
+
+class PushedStackCoulomb : public ::testing::TestWithParam<Cell>
+{
+};
+
+TEST_P(PushedStackCoulomb, WorldAndSolverOnly) { expectCoulomb(GetParam()); }
+
+std::string cellName(const ::testing::TestParamInfo<Cell>& info)
+{
+	static const char* shapes[] = {"box", "hull", "hullFeatures", "prism", "cylinder", "compound"};
+	static const char* grounds[] = {"onBox", "onPlane", "onMesh", "onMeshEdges", "onHeightfield"};
+	return std::string(shapes[info.param.shape]) + "_" + grounds[info.param.ground] + (slides(info.param) ? "_F140_slides" : "_F060_stays");
+}
+
+constexpr double kSlides = 1.4, kStays = 0.6;
+
+// Holding in float (Release): world and solver-only mode both hold the statement. Where the reference
+// does not, the cell is skipped with the reference's figure: box, hull and prism on the plane sliding
+// (reference apart 7.3, 6.3 and 5.3 cm), the compound on a box sliding (1.3 cm), the prism on a box at
+// rest (drift 1.4 cm); the plugin holds all five (apart 0.0-2.8 mm, drift 0). Closest to its bound:
+// the compound on the mesh with internal edges sliding, apart 8.6 mm in both modes.
+INSTANTIATE_TEST_SUITE_P(Holding, PushedStackCoulomb,
+						 ::testing::Values(Cell{0, 0, kSlides}, Cell{0, 1, kSlides}, Cell{1, 1, kSlides}, Cell{3, 1, kSlides}, Cell{4, 1, kSlides},
+										   Cell{5, 0, kSlides}, Cell{5, 3, kSlides},
+										   Cell{0, 0, kStays}, Cell{0, 1, kStays}, Cell{0, 2, kStays}, Cell{0, 3, kStays}, Cell{0, 4, kStays},
+										   Cell{1, 0, kStays}, Cell{1, 1, kStays}, Cell{1, 2, kStays}, Cell{1, 3, kStays}, Cell{1, 4, kStays},
+										   Cell{3, 0, kStays}, Cell{3, 1, kStays}, Cell{3, 2, kStays}, Cell{3, 3, kStays}, Cell{3, 4, kStays},
+										   Cell{4, 0, kStays}, Cell{4, 1, kStays}, Cell{4, 2, kStays}, Cell{4, 3, kStays}, Cell{4, 4, kStays},
+										   Cell{5, 0, kStays}, Cell{5, 1, kStays}, Cell{5, 2, kStays}, Cell{5, 3, kStays}, Cell{5, 4, kStays}),
+						 cellName);
+
+// Not holding yet: sliding cells where world or solver-only mode fails (float, the last run; a against
+// Coulomb's 1.962 m/s^2, apart in m; world / solver-only). In every one of them the converged reference
+// fails too, so none would be asserted today (its upper bodies creep back 3-32 cm relative to the bottom
+// one over the 2 s; on the mesh and the heightfield the bottom body also catches on cell edges and a falls
+// short), but a build whose reference holds would assert them:
+//   box on mesh             a 1.401 / 1.164, apart 0.124 / 0.555
+//   box on mesh+edges       apart 0.0996 / 0.242
+//   box on heightfield      a 5.773 / 8.573, apart 5.57 / 6.73
+//   hull on box             apart 0.0115 / 0.0041 (world only)
+//   hull on mesh            a 1.351 / 5.927, apart 0.583 / 4.74
+//   hull on mesh+edges      apart 0.115 / 0.128
+//   hull on heightfield     a 1.042 / 0.855, apart 0.403 / 0.480
+//   prism on box            apart 0.0170 / 0.0185
+//   prism on mesh           a 1.192 / 1.306, apart 0.143 / 0.169
+//   prism on mesh+edges     apart 0.0625 / 0.0998
+//   prism on heightfield    a 1.275 / 0.983, apart 0.292 / 0.435
+//   cylinder on box         apart 0.0783 / 0.0637
+//   cylinder on mesh        a 1.673 / 1.221, apart 0.718 / 0.159
+//   cylinder on mesh+edges  apart 0.0998 / 0.356
+//   cylinder on heightfield a 0.798 / 1.455, apart 0.145 / 1.03
+//   compound on plane       a 21.43 / 13.09, apart 21.8 / 12.3
+//   compound on mesh        a 1.592 / 3.139, apart 0.608 / 2.32
+//   compound on heightfield a 1.077 / 0.314, apart 0.267 / 0.165
+INSTANTIATE_TEST_SUITE_P(DISABLED_NotYet, PushedStackCoulomb,
+						 ::testing::Values(Cell{0, 2, kSlides}, Cell{0, 3, kSlides}, Cell{0, 4, kSlides},
+										   Cell{1, 0, kSlides}, Cell{1, 2, kSlides}, Cell{1, 3, kSlides}, Cell{1, 4, kSlides},
+										   Cell{3, 0, kSlides}, Cell{3, 2, kSlides}, Cell{3, 3, kSlides}, Cell{3, 4, kSlides},
+										   Cell{4, 0, kSlides}, Cell{4, 2, kSlides}, Cell{4, 3, kSlides}, Cell{4, 4, kSlides},
+										   Cell{5, 1, kSlides}, Cell{5, 2, kSlides}, Cell{5, 4, kSlides}),
+						 cellName);
+}  // namespace
