@@ -20,6 +20,8 @@ subject to the following restrictions:
 #include "BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h"
 #include "BulletCollision/CollisionDispatch/btManifoldResult.h"
 #include "BulletCollision/CollisionShapes/btCompoundShape.h"
+#include "BulletCollision/CollisionShapes/btConcaveShape.h"
+#include "BulletCollision/CollisionShapes/btTriangleCallback.h"
 #include "BulletCollision/CollisionShapes/btConvexShape.h"
 #include "BulletCollision/CollisionShapes/btPolyhedralConvexShape.h"
 #include "BulletCollision/CollisionShapes/btStaticPlaneShape.h"
@@ -36,7 +38,9 @@ struct PatchSide
 {
 	bool convex = false;
 	bool flat = false;
-	btVector3 planeNormal;            // a flat side's normal (world)
+	btVector3 planeNormal = btVector3(0, 0, 0);  // a flat side's normal (world)
+	const btConcaveShape* concave = 0;  // a static mesh or heightfield: its triangles are looked up
+	btTransform frame = btTransform::getIdentity();  // the side's world frame
 	btVector3 rim[kRim];
 	btScalar rimU[kRim], rimV[kRim];  // the rim in the tangent plane's coordinates
 	int rimCount = 0;                 // distinct rim points (in order around the normal)
@@ -65,6 +69,12 @@ bool describeSide(const btCollisionShape* shape, const btTransform& frame, const
 		side.planeNormal = frame.getBasis() * static_cast<const btStaticPlaneShape*>(shape)->getPlaneNormal();
 		return true;
 	}
+	side.frame = frame;
+	if (shape->isConcave())
+	{
+		side.concave = static_cast<const btConcaveShape*>(shape);
+		return true;
+	}
 	if (!shape->isConvex()) return false;
 	side.convex = true;
 	const btConvexShape* convex = static_cast<const btConvexShape*>(shape);
@@ -88,6 +98,56 @@ bool describeSide(const btCollisionShape* shape, const btTransform& frame, const
 		side.rimV[side.rimCount] = v;
 		++side.rimCount;
 	}
+	return true;
+}
+
+/// The triangle of a mesh or heightfield side under a world point: of the triangles within `range`
+/// whose normal lies within faceAlignment of `along` and under which the point lies (its
+/// projection inside, within `slack`), the nearest. Gives its normal (world, along `along`) and the
+/// point's distance above its plane.
+struct btTriangleUnder : public btTriangleCallback
+{
+	btVector3 m_point, m_along;  // in the shape's frame
+	btScalar m_slack = 0;
+	bool m_found = false;
+	btScalar m_distance = 0;
+	btVector3 m_normal;
+	virtual void processTriangle(btVector3* t, int /*partId*/, int /*triangleIndex*/)
+	{
+		btVector3 normal = (t[1] - t[0]).cross(t[2] - t[0]);
+		const btScalar length = normal.length();
+		if (!(length > SIMD_EPSILON)) return;  // a degenerate triangle has no face
+		normal /= length;
+		if (normal.dot(m_along) < 0) normal = -normal;
+		if (normal.dot(m_along) < btShockPropagationNumerics::faceAlignment()) return;
+		const btScalar distance = (m_point - t[0]).dot(normal);
+		for (int e = 0; e < 3; ++e)
+		{
+			const btVector3 edge = t[(e + 1) % 3] - t[e];
+			const btVector3 inward = normal.cross(edge).normalized();
+			if ((m_point - t[e]).dot(inward) < -m_slack) return;
+		}
+		if (!m_found || btFabs(distance) < btFabs(m_distance))
+		{
+			m_found = true;
+			m_distance = distance;
+			m_normal = normal;
+		}
+	}
+};
+
+bool triangleUnder(const PatchSide& side, const btVector3& point, const btVector3& along, btScalar range, btScalar slack,
+				   btVector3& normal, btScalar& distance)
+{
+	btTriangleUnder query;
+	query.m_point = side.frame.invXform(point);
+	query.m_along = along * side.frame.getBasis();
+	query.m_slack = slack;
+	const btVector3 extent(range, range, range);
+	side.concave->processAllTriangles(&query, query.m_point - extent, query.m_point + extent);
+	if (!query.m_found) return false;
+	normal = side.frame.getBasis() * query.m_normal;
+	distance = query.m_distance;
 	return true;
 }
 
@@ -167,8 +227,10 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 	if (objectA->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE && objectB->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE) return 0;  // D30
 	// The two parts in touch: one child pair for a compound (every point names the same children).
 	const int childA = manifold.getContactPoint(0).m_index0, childB = manifold.getContactPoint(0).m_index1;
+	const bool compoundA = objectA->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
+	const bool compoundB = objectB->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
 	for (int j = 1; j < initial; ++j)
-		if (manifold.getContactPoint(j).m_index0 != childA || manifold.getContactPoint(j).m_index1 != childB) return 0;
+		if ((compoundA && manifold.getContactPoint(j).m_index0 != childA) || (compoundB && manifold.getContactPoint(j).m_index1 != childB)) return 0;
 	const btCollisionShape* shapeA;
 	const btCollisionShape* shapeB;
 	btTransform frameA, frameB;
@@ -209,12 +271,42 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 		describeSide(shapeA, frameA, -n, t1, t2, sides[0]);
 		describeSide(shapeB, frameB, n, t1, t2, sides[1]);
 	}
-	const btManifoldPoint reference = manifold.getContactPoint(0);
 	const btScalar breaking = manifold.getContactBreakingThreshold();
 	const btScalar slack = btScalar(1e-3) * breaking;
+	// A convex face resting on a mesh or heightfield: each point takes the normal of the triangle
+	// under it, as Bullet's internal-edge adjustment would, where the convex face lies along it (a
+	// point on an internal edge otherwise gets the edge's normal, and a sliding body catches on it).
+	const int concaveSide = sides[0].concave ? 0 : (sides[1].concave ? 1 : -1);
+	if (concaveSide >= 0)
+	{
+		const btVector3 convexFace = faceNormal(sides[1 - concaveSide], n);
+		for (int j = 0; j < initial && !convexFace.isZero(); ++j)
+		{
+			btManifoldPoint& p = manifold.getContactPoint(j);
+			const btVector3 onConvex = concaveSide == 1 ? p.getPositionWorldOnA() : p.getPositionWorldOnB();
+			btVector3 normal;
+			btScalar height;
+			if (!triangleUnder(sides[concaveSide], onConvex, concaveSide == 1 ? n : -n, breaking, slack, normal, height)) continue;
+			if (normal.dot(concaveSide == 1 ? convexFace : -convexFace) < btShockPropagationNumerics::faceAlignment()) continue;
+			const btVector3 along = concaveSide == 1 ? normal : -normal;  // from B into A
+			p.m_normalWorldOnB = along;
+			p.m_distance1 = height;
+			if (concaveSide == 1)
+			{
+				p.m_positionWorldOnB = onConvex - along * height;
+				p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
+			}
+			else
+			{
+				p.m_positionWorldOnA = onConvex + along * height;
+				p.m_localPointA = objectA->getWorldTransform().invXform(p.m_positionWorldOnA);
+			}
+		}
+	}
+	const btManifoldPoint reference = manifold.getContactPoint(0);
 
 	// Candidates: rim points of either side within reach of the other's plane and over its face.
-	btVector3 candidateA[2 * kRim];
+	btVector3 candidateA[2 * kRim], candidateNormal[2 * kRim];
 	btScalar candidateDistance[2 * kRim];
 	int numCandidates = 0;
 	for (int s = 0; s < 2; ++s)
@@ -225,10 +317,24 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 		for (int k = 0; k < side.rimCount; ++k)
 		{
 			// Distance between the faces at this point, positive apart (A above B along n).
-			const btScalar distance = s == 0 ? (side.rim[k] - otherPoint).dot(n) : (otherPoint - side.rim[k]).dot(n);
+			btScalar distance;
+			btVector3 normal = n;
+			if (other.concave)
+			{
+				// The triangle under the rim point is the face it rests on (none: it is not over one).
+				btScalar height;
+				if (!triangleUnder(other, side.rim[k], s == 0 ? n : -n, breaking, slack, normal, height)) continue;
+				if (s == 1) normal = -normal;
+				distance = height;
+			}
+			else
+			{
+				distance = s == 0 ? (side.rim[k] - otherPoint).dot(n) : (otherPoint - side.rim[k]).dot(n);
+				if (!over(other, side.rimU[k], side.rimV[k], slack)) continue;
+			}
 			if (!(distance <= reach && distance >= -breaking)) continue;
-			if (!over(other, side.rimU[k], side.rimV[k], slack)) continue;
-			candidateA[numCandidates] = s == 0 ? side.rim[k] : side.rim[k] + n * distance;
+			candidateA[numCandidates] = s == 0 ? side.rim[k] : side.rim[k] + normal * distance;
+			candidateNormal[numCandidates] = normal;
 			candidateDistance[numCandidates] = distance;
 			++numCandidates;
 		}
@@ -237,8 +343,9 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 	// manifold's first point, the app's callback run where a body asks for it.
 	auto makePoint = [&](int c) {
 		const btVector3 onA = candidateA[c];
-		const btVector3 onB = onA - n * candidateDistance[c];
+		const btVector3 onB = onA - candidateNormal[c] * candidateDistance[c];
 		btManifoldPoint point = reference;
+		point.m_normalWorldOnB = candidateNormal[c];
 		point.m_localPointA = objectA->getWorldTransform().invXform(onA);
 		point.m_localPointB = objectB->getWorldTransform().invXform(onB);
 		point.m_positionWorldOnA = onA;
