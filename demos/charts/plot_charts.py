@@ -3,7 +3,7 @@
 
 usage: plot_charts.py RESULTS_DIR CHARTS_DIR
 
-Reads RESULTS_DIR/{pareto,towers,scaling,truth}.csv (pareto also from RESULTS_DIR/pareto-*/), writes PNG and SVG charts to CHARTS_DIR and prints
+Reads RESULTS_DIR/{pareto,towers,scaling,truth,truth_grid}.csv (pareto also from RESULTS_DIR/pareto-*/), writes PNG and SVG charts to CHARTS_DIR and prints
 the headline figures (also written to RESULTS_DIR/headline.txt). Needs Debian's python3-matplotlib.
 """
 import csv
@@ -278,6 +278,92 @@ TRUTH_STYLE = {
 }
 
 
+def truth_points(rows):
+    """Per configuration (in the CSV's order): config, iterations, truths passed, mean ms per step over the cases
+    that ran, cases skipped."""
+    points = []
+    for config, iterations in dict.fromkeys((r["config"], int(r["iterations"])) for r in rows):
+        mine = [r for r in rows if r["config"] == config and int(r["iterations"]) == iterations]
+        ran = [r for r in mine if r["pass"] != "skipped" and not math.isnan(num(r["msPerStep"]))]
+        if not ran:
+            continue
+        passed = sum(1 for r in ran if r["pass"] == "1")
+        ms = sum(num(r["msPerStep"]) for r in ran) / len(ran)
+        points.append((config, iterations, passed, ms, len(mine) - len(ran)))
+    return points
+
+
+def overlaps(box, boxes):
+    return any(box.x0 < b.x1 and b.x0 < box.x1 and box.y0 < b.y1 and b.y0 < box.y1 for b in boxes)
+
+
+# The converged reference of tests/truth/ShapeGridTest.cpp and PushedGridTest.cpp (stock SI, 8 sub-steps x 100
+# iterations): demos/charts.sh runs it on the grid beside truth_vs_cost's configurations.
+GRID_REFERENCE = ("si-sub8", 100)
+
+
+def plot_truth_grid(rows, out_dir):
+    """The shape grid (bsp_truth --grid): truths held of the grid's cases against mean ms per step over them, one point
+    per configuration, as truth_vs_cost; the counts are far apart in the markers' units, so labels are placed where
+    they overlap no other label or marker (display coordinates) rather than stacked by count."""
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    groups = list(dict.fromkeys(r["group"] for r in rows))
+    points = truth_points(rows)
+    fig, ax = plt.subplots(figsize=(10, 7))
+    seen = set()
+    for config, iterations, passed, ms, skipped in points:
+        color, marker = TRUTH_STYLE.get(config, ("black", "o"))
+        ax.scatter([ms], [passed], color=color if not skipped else "white", edgecolors=color, marker=marker, s=70, zorder=3,
+                   label=config if config not in seen else None)
+        seen.add(config)
+    ax.set_xscale("log")
+    log_ticks(ax.xaxis)
+    top = len(cases)
+    ax.set_ylim(-0.08 * top, 1.1 * top)
+    ax.set_yticks(range(0, top + 1, 5))
+    ax.axhline(top, color="grey", linestyle=":", linewidth=1)
+    ax.set_xlabel("mean ms per step over the cases (log)")
+    ax.set_ylabel(f"truths held (of {top})")
+    per = ", ".join(f"{sum(1 for c in dict.fromkeys((r['case'], r['group']) for r in rows) if c[1] == g)} {g}" for g in groups)
+    ax.set_title(f"Shape grid (5 shapes x 5 grounds): physics statements held against cost per step\n({per})", fontsize=11)
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left", title="hollow: some cases skipped (MLCP over its time limit)", title_fontsize=7)
+    low, high = ax.get_xlim()
+    ax.set_xlim(low, high * 1.3)  # room for the labels of the costliest points
+    fig.tight_layout()  # before the labels are placed: it moves the axes
+    # Labels: for each point (highest count first) the first offset whose text box overlaps no placed label or marker.
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    taken = [ax.get_legend().get_window_extent(renderer)]
+    inside = ax.get_window_extent(renderer)
+    for _, _, passed, ms, _ in points:
+        x, y = ax.transData.transform((ms, passed))
+        taken.append(matplotlib.transforms.Bbox.from_extents(x - 7, y - 7, x + 7, y + 7))
+    offsets = [(6, 3, "left"), (6, -10, "left"), (-6, 3, "right"), (-6, -10, "right")] + \
+        [(dx, dy, ha) for k in range(1, 8) for dy in (3 + 10 * k, -10 - 10 * k) for dx, ha in ((6, "left"), (-6, "right"))]
+    for config, iterations, passed, ms, skipped in sorted(points, key=lambda p: -p[2]):
+        color, _ = TRUTH_STYLE.get(config, ("black", "o"))
+        text = config if config == "mlcp" else f"{config} {iterations}"
+        if (config, iterations) == GRID_REFERENCE:
+            text += " (the ctest grid's reference)"
+        if skipped:
+            text += f" ({skipped} skipped)"
+        text += f": {passed}"
+        for dx, dy, ha in offsets:
+            label = ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(dx, dy), fontsize=7, color=color, ha=ha,
+                                arrowprops=None if abs(dy) <= 10 else dict(arrowstyle="-", color=color, linewidth=0.5, alpha=0.6))
+            label.update_positions(renderer)
+            box = matplotlib.text.Text.get_window_extent(label, renderer)  # the text alone, not its leader line
+            if inside.x0 <= box.x0 and box.x1 <= inside.x1 and inside.y0 <= box.y0 and box.y1 <= inside.y1 and not overlaps(box, taken):
+                break
+            label.remove()
+        else:
+            label = ax.annotate(text, (ms, passed), textcoords="offset points", xytext=(6, 3), fontsize=7, color=color)
+            box = matplotlib.text.Text.get_window_extent(label, renderer)
+        taken.append(box)
+    save(fig, out_dir, "truth_vs_cost_grid")
+
+
 def plot_truth(rows, out_dir):
     """Truths passed against mean ms per step over the cases, one point per configuration."""
     cases = list(dict.fromkeys(r["case"] for r in rows))
@@ -441,6 +527,8 @@ def main():
     scaling = read(scaling_csv) if os.path.exists(scaling_csv) else []
     truth_csv = os.path.join(results, "truth.csv")
     truth = read(truth_csv) if os.path.exists(truth_csv) else []
+    grid_csv = os.path.join(results, "truth_grid.csv")  # bsp_truth --grid: the shape grid's cases
+    grid = read(grid_csv) if os.path.exists(grid_csv) else []
     if pareto:
         plot_pareto(pareto, charts)
     if towers:
@@ -449,6 +537,8 @@ def main():
         plot_scaling(scaling, charts)
     if truth:
         plot_truth(truth, charts)
+    if grid:
+        plot_truth_grid(grid, charts)
     if not pareto and not scaling:
         return  # only other results (e.g. truth.csv): no headline to state
     lines = headline(pareto, scaling, truth)

@@ -44,6 +44,7 @@ struct PatchSide
 	btVector3 rim[kRim];
 	btScalar rimU[kRim], rimV[kRim];  // the rim in the tangent plane's coordinates
 	int rimCount = 0;                 // distinct rim points (in order around the normal)
+	bool flatRim = false;             // the rim points lie in one plane across the normal: a face
 };
 
 /// The shape a manifold of `object` touches and its world frame: the body's shape, or for a
@@ -61,7 +62,7 @@ bool partOf(const btCollisionObject* object, int childIndex, const btCollisionSh
 	return true;
 }
 
-bool describeSide(const btCollisionShape* shape, const btTransform& frame, const btVector3& facing, const btVector3& t1, const btVector3& t2, PatchSide& side)
+bool describeSide(const btCollisionShape* shape, const btTransform& frame, const btVector3& facing, const btVector3& t1, const btVector3& t2, btScalar flatness, PatchSide& side)
 {
 	if (shape->getShapeType() == STATIC_PLANE_PROXYTYPE)
 	{
@@ -97,6 +98,24 @@ bool describeSide(const btCollisionShape* shape, const btTransform& frame, const
 		side.rimU[side.rimCount] = u;
 		side.rimV[side.rimCount] = v;
 		++side.rimCount;
+	}
+	// A face only if the rim is flat: a body touching with a corner or an edge has rim points at
+	// different heights along the normal (its support in the tilted directions leaves the face).
+	if (side.rimCount >= 3)
+	{
+		btVector3 normal(0, 0, 0);  // Newell's: the rim polygon's own normal
+		for (int k = 0; k < side.rimCount; ++k) normal += side.rim[k].cross(side.rim[(k + 1) % side.rimCount]);
+		if (normal.length2() > SIMD_EPSILON * SIMD_EPSILON)
+		{
+			normal.normalize();
+			btScalar low = BT_LARGE_FLOAT, high = -BT_LARGE_FLOAT;
+			for (int k = 0; k < side.rimCount; ++k)
+			{
+				low = btMin(low, (side.rim[k] - side.rim[0]).dot(normal));
+				high = btMax(high, (side.rim[k] - side.rim[0]).dot(normal));
+			}
+			side.flatRim = high - low <= flatness;
+		}
 	}
 	return true;
 }
@@ -182,7 +201,7 @@ btVector3 faceNormal(const PatchSide& side, const btVector3& along)
 {
 	btVector3 sum(0, 0, 0);
 	if (side.flat) return side.planeNormal.dot(along) < 0 ? -side.planeNormal : side.planeNormal;
-	if (!side.convex || side.rimCount < 3) return sum;
+	if (!side.convex || side.rimCount < 3 || !side.flatRim) return sum;
 	for (int i = 0; i < side.rimCount; ++i)
 		sum += side.rim[i].cross(side.rim[(i + 1) % side.rimCount]);
 	const btScalar length = sum.length();
@@ -195,7 +214,7 @@ btVector3 faceNormal(const PatchSide& side, const btVector3& along)
 bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
 {
 	if (side.flat) return true;
-	if (side.rimCount < 3) return false;  // a point or a line: no face to rest on
+	if (side.rimCount < 3 || !side.flatRim) return false;  // a point, a line or a corner: no face to rest on
 	// The polygon's orientation from its area, so the test holds either way round.
 	btScalar area = 0;
 	for (int i = 0; i < side.rimCount; ++i)
@@ -218,7 +237,7 @@ bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
 }
 }  // namespace
 
-int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
+int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btScalar keepDepth)
 {
 	const int initial = manifold.getNumContacts();
 	if (initial < 1 || !(reach > btScalar(0))) return 0;
@@ -235,43 +254,64 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 	const btCollisionShape* shapeB;
 	btTransform frameA, frameB;
 	if (!partOf(objectA, childA, shapeA, frameA) || !partOf(objectB, childB, shapeB, frameB)) return 0;
+	// A resting patch: no point deeper than the breaking threshold (a deep overlap is a collision
+	// being resolved, and its normal is EPA's way out, not a face's).
+	const btScalar breaking = manifold.getContactBreakingThreshold();
+	for (int j = 0; j < initial; ++j)
+		if (!(manifold.getContactPoint(j).getDistance() >= -breaking)) return 0;
+	const btScalar flatness = btScalar(1e-3) * breaking;  // m, how far a face's rim may leave its plane
 	btVector3 n = manifold.getContactPoint(0).m_normalWorldOnB;  // from B into A
 	if (!(btFabs(n.length2() - btScalar(1)) < btScalar(1e-3))) return 0;
 	btVector3 t1, t2;
 	btPlaneSpace1(n, t1, t2);
 	PatchSide sides[2];
-	if (!describeSide(shapeA, frameA, -n, t1, t2, sides[0]) || !describeSide(shapeB, frameB, n, t1, t2, sides[1])) return 0;
+	if (!describeSide(shapeA, frameA, -n, t1, t2, flatness, sides[0]) || !describeSide(shapeB, frameB, n, t1, t2, flatness, sides[1])) return 0;
 	if (!sides[0].convex && !sides[1].convex) return 0;
-	// A face resting on a face: every point takes the face's own normal, and its distance along
-	// it. GJK/EPA's normal is the shapes' closest direction found to its tolerance: between a
+	// A face resting on a face: every point takes the reference face's normal, and its distance
+	// along it. GJK/EPA's normal is the shapes' closest direction found to its tolerance: between a
 	// cylinder and a 100 m ground box it was off by 2 mrad, and points of one patch with normals
-	// that differ push the body sideways through their friction rows.
-	// The reference face: a static body's (the ground does not tilt), else the larger face, as
-	// face clipping takes it.
+	// that differ push the body sideways through their friction rows. The reference face: a
+	// static part's (the ground does not tilt), else the larger one, as face clipping takes it.
+	// Each point keeps its place on the other part and moves along the normal onto the reference
+	// face's plane, so both stay on their part's surface (moving a sphere's point off its surface
+	// instead flung bodies in hostile worlds, seeds 241 and 485: 89 and 603 m/s).
 	const btVector3 faceA = faceNormal(sides[0], n), faceB = faceNormal(sides[1], n);
-	btVector3 face = faceB;
-	if (face.isZero() || (!faceA.isZero() && (objectA->isStaticOrKinematicObject() ? true : !objectB->isStaticOrKinematicObject() && rimArea(sides[0]) > rimArea(sides[1]))))
-		face = faceA;
-	if (!face.isZero() && face.dot(n) >= btShockPropagationNumerics::faceAlignment() && face.dot(n) < btScalar(1))
+	int referenceSide = -1;  // the side whose face is imposed
+	if (objectA->isStaticOrKinematicObject() && !faceA.isZero())
+		referenceSide = 0;
+	else if (objectB->isStaticOrKinematicObject() && !faceB.isZero())
+		referenceSide = 1;
+	else if (!faceA.isZero() && !faceB.isZero())
+		referenceSide = rimArea(sides[0]) > rimArea(sides[1]) ? 0 : 1;
+	else if (!faceA.isZero() || !faceB.isZero())
+		referenceSide = faceA.isZero() ? 1 : 0;
+	const btVector3 face = referenceSide == 0 ? faceA : (referenceSide == 1 ? faceB : btVector3(0, 0, 0));
+	if (referenceSide >= 0 && face.dot(n) >= btShockPropagationNumerics::faceAlignment() && face.dot(n) < btScalar(1))
 	{
 		n = face;
 		for (int j = 0; j < initial; ++j)
 		{
 			btManifoldPoint& p = manifold.getContactPoint(j);
-			const btVector3 onA = p.getPositionWorldOnA();
-			const btScalar distance = (onA - p.getPositionWorldOnB()).dot(n);
+			const btScalar distance = (p.getPositionWorldOnA() - p.getPositionWorldOnB()).dot(n);
 			p.m_normalWorldOnB = n;
 			p.m_distance1 = distance;
-			p.m_positionWorldOnB = onA - n * distance;
-			p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
+			if (referenceSide == 1)
+			{
+				p.m_positionWorldOnB = p.getPositionWorldOnA() - n * distance;
+				p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
+			}
+			else
+			{
+				p.m_positionWorldOnA = p.getPositionWorldOnB() + n * distance;
+				p.m_localPointA = objectA->getWorldTransform().invXform(p.m_positionWorldOnA);
+			}
 		}
 		btPlaneSpace1(n, t1, t2);
 		sides[0] = PatchSide();
 		sides[1] = PatchSide();
-		describeSide(shapeA, frameA, -n, t1, t2, sides[0]);
-		describeSide(shapeB, frameB, n, t1, t2, sides[1]);
+		describeSide(shapeA, frameA, -n, t1, t2, flatness, sides[0]);
+		describeSide(shapeB, frameB, n, t1, t2, flatness, sides[1]);
 	}
-	const btScalar breaking = manifold.getContactBreakingThreshold();
 	const btScalar slack = btScalar(1e-3) * breaking;
 	// A convex face resting on a mesh or heightfield: each point takes the normal of the triangle
 	// under it, as Bullet's internal-edge adjustment would, where the convex face lies along it (a
@@ -314,7 +354,9 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 		const PatchSide& side = sides[s];
 		const PatchSide& other = sides[1 - s];
 		const btVector3 otherPoint = s == 0 ? reference.getPositionWorldOnB() : reference.getPositionWorldOnA();
-		for (int k = 0; k < side.rimCount; ++k)
+		// Only a face's rim: a capsule's line or a sphere's point is Bullet's contact as it is
+		// (adding a capsule's ends put three more hostile worlds over their speed caps).
+		for (int k = 0; k < side.rimCount && side.flatRim; ++k)
 		{
 			// Distance between the faces at this point, positive apart (A above B along n).
 			btScalar distance;
@@ -419,7 +461,8 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach)
 				if (!(gapToPoints(c) > sameSpot2)) continue;
 				for (int j = 0; j < MANIFOLD_CACHE_SIZE; ++j)
 				{
-					if (j == deepest) continue;
+					// A point deeper than keepDepth carries penetration to remove: it stays.
+					if (j == deepest || manifold.getContactPoint(j).getDistance() < -keepDepth) continue;
 					const btScalar keepU = u[j], keepV = v[j];
 					u[j] = candidateA[c].dot(t1);
 					v[j] = candidateA[c].dot(t2);

@@ -21,30 +21,34 @@ class btPersistentManifold;
 
 /// D33 (docs/design.md, section 11): a convex face resting on another face gets its whole patch.
 ///
-/// Bullet's GJK/EPA finds one point per pair and step, and the manifold collects them over steps;
-/// a cylinder, hull or capsule that starts resting (or whose points were replaced) stands on one
-/// or two points for several steps and pivots: a column of 10 cylinders on the plugin's solve
-/// moved 2-15 cm where the converged reference moves 3 mm. btBoxBoxDetector clips whole faces
-/// (boxes: D30, btBoxFaceCorners.h); other pairs have no such test, so the patch is completed from
-/// the shapes' own support functions, for any convex shape:
+/// Bullet's GJK/EPA finds one point per pair and step, and when the manifold is full keeps the new
+/// point in place of the one leaving the largest area: columns of cylinders ended on three rim
+/// points and an inner one, a triangle through their own centre, and fell. btBoxBoxDetector clips
+/// whole faces (two boxes: D30, btBoxFaceCorners.h); for every other pair the patch is completed
+/// from the parts' own support functions (a part: the body's shape or, for a compound, the child
+/// the manifold's points name):
 ///
 ///   rim_X(k) = S_X(d_k) - m_X s_X n,   d_k = -s_X n + 0.5 (cos(k pi/4) t1 + sin(k pi/4) t2),  k = 0..7
 ///
 /// n is the manifold's normal (from B into A), s_A = 1, s_B = -1, t1 and t2 span the tangent
 /// plane, S_X is X's support mapping without its margin m_X (the margin Bullet's GJK rounds the
-/// shape by; 0 for a hull with polyhedral features, whose clipping uses the bare faces). Every
-/// rim point of X lies on the flat face of X that looks along -s_X n, a corner of it for a
-/// polygon, a point of its circle for a cylinder, an end of a capsule's line, or (a sphere) all
-/// the same point. A rim point of A is a contact point where it lies within `reach` outside or
-/// the manifold's breaking threshold inside the plane through the manifold's first point on B
-/// (normal n), and over B's face: inside the polygon of B's rim points in the tangent plane (B a
-/// btStaticPlaneShape: everywhere); the same for B's rim against A. Of the candidates, the ones
-/// farthest from the points already there (and from each other) are added, up to the manifold's
-/// four. Pairs of two btBoxShape bodies are left to D30 (btBoxBoxDetector's boxes have no
-/// rounding; its corners are exact). Meshes, heightfields and compounds are not completed (their
-/// faces are not one shape's). Every new point copies the manifold's first point (coefficients,
-/// flags) and gContactAddedCallback is called for it where a body asks (as btManifoldResult does).
-/// Returns the number of points added.
-int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach);
+/// shape by; 0 for a hull with polyhedral features, whose clipping uses the bare faces). A rim is
+/// a face when its points lie in one plane (within 1e-3 of the breaking threshold): a polygon's
+/// corners, points of a cylinder's circle; a capsule's rim is its line's two ends, a sphere's one
+/// point. For a manifold whose points are all within the breaking threshold (a resting patch):
+/// 1. a static part's face (or a btStaticPlaneShape) within about 8 degrees of n gives every point
+///    its normal; on a static mesh or heightfield each point takes the normal of the triangle under
+///    it (processAllTriangles) where the convex face lies along it;
+/// 2. rim points of either part's face (not a capsule's line) within `reach` outside or the breaking threshold inside the other
+///    part's face and over it (inside its rim polygon; on a plane everywhere; on a mesh or
+///    heightfield over a triangle that faces it) are candidates; while the manifold holds fewer
+///    than four points the candidate farthest from them is added;
+/// 3. a full manifold trades a point for a candidate while that enlarges the points' hull by 1%,
+///    never its deepest point nor one deeper than `keepDepth` (m; the correction's slop), through
+///    removeContactPoint and addManifoldPoint (the app's callbacks run).
+/// Every new point copies the manifold's first point (coefficients, flags) and
+/// gContactAddedCallback is called for it where a body asks (as btManifoldResult does). Returns
+/// the number of points added or traded.
+int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btScalar keepDepth);
 
 #endif  // BT_SHOCK_PROPAGATION_CONTACT_PATCH_H

@@ -85,7 +85,9 @@ btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContac
 	if (m_settings.m_completeContactPatches)
 	{
 		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
-		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numPatchPoints += btCompleteContactPatch(*m_manifolds[i], reach);
+		const btScalar slop = m_settings.m_correctionSlop >= btScalar(0) ? m_settings.m_correctionSlop
+																		  : m_settings.m_correctionSlopPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
+		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numPatchPoints += btCompleteContactPatch(*m_manifolds[i], reach, slop);
 	}
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;

@@ -133,10 +133,12 @@ bool btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 		// patches are completed as for the solve (D30, D33), so the correction does not turn a
 		// body about a single point.
 		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
+		const btScalar slop = m_settings.m_correctionSlop >= btScalar(0) ? m_settings.m_correctionSlop
+																		  : m_settings.m_correctionSlopPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
 		for (int i = 0; i < keptManifolds; ++i)
 		{
 			if (m_settings.m_keepBoxFaceCorners) btKeepBoxFaceCorners(*m_manifolds[i], reach);
-			if (m_settings.m_completeContactPatches) btCompleteContactPatch(*m_manifolds[i], reach);
+			if (m_settings.m_completeContactPatches) btCompleteContactPatch(*m_manifolds[i], reach, slop);
 		}
 		moved = correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection, fraction);
 	}

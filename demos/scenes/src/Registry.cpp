@@ -47,6 +47,7 @@ const std::vector<SceneEntry>& registry()
 		{"truth", "ramp_stack", "Three boxes stacked on a 20 degree ramp: sticks iff mu >= tan(angle), else slides at g (sin a - mu cos a).", createRampStack, rampStackParams()},
 		{"truth", "shape_column", "Column of 10 equal bodies of one shape (box, hull, prism, cylinder, compound) on a box, plane, mesh or heightfield ground: stands.", createShapeColumn, shapeColumnParams()},
 		{"truth", "round_on_block", "A heavy sphere or lying capsule at rest on a light box on the ground (any ground kind): both stay at rest.", createRoundOnBlock, roundOnBlockParams()},
+		{"truth", "leaning_plank", "A plank leaning at 60 degrees against a static wall on any ground kind: stands iff mu is above the critical mu statics gives for its geometry.", createLeaningPlank, leaningPlankParams()},
 		{"truth", "loaded_lintel", "Lintel on two capped columns with a heavy box off centre: the caps share the load by the lever rule.", createLoadedLintel, loadedLintelParams()},
 
 		// benchmark: layouts after Bullet's BenchmarkDemo and PyBullet's tests, with the outcome physics predicts

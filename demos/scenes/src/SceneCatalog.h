@@ -91,6 +91,8 @@ std::unique_ptr<SceneContent> createShapeColumn(btDiscreteDynamicsWorld& world, 
 std::unique_ptr<SceneContent> createRoundOnBlock(btDiscreteDynamicsWorld& world, const Params& params);
 Params shapeColumnParams();
 Params roundOnBlockParams();
+std::unique_ptr<SceneContent> createLeaningPlank(btDiscreteDynamicsWorld& world, const Params& params);
+Params leaningPlankParams();
 
 // ExampleScenes.cpp
 std::unique_ptr<SceneContent> createBasicDemoBlock(btDiscreteDynamicsWorld& world, const Params& params);

@@ -3,12 +3,18 @@
 // demos/charts/plot_charts.py for the truth_vs_cost chart) and a markdown table (cases x
 // configurations, PASS/FAIL and the figure). Not part of the shipped plugin.
 //
+// --grid runs the shape grid's cases (truth::gridCases(), include/truth/GridCases.h) instead: the
+// CSV defaults to demos/charts/results/truth_grid.csv (the truth_vs_cost_grid chart) and the markdown
+// adds a passed row per group (grid_column, grid_slides, grid_stays).
+//
 // MLCP runs each case in a child process under a time limit (--timeout, 20 s): a case it cannot
 // finish in time is marked "skipped". It runs after the other configurations of the same case, so
 // the case's cached reference is already computed when the child is forked.
 #include <harness/CommandLine.h>
+#include <truth/GridCases.h>
 #include <truth/TruthCase.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -30,12 +36,14 @@
 namespace
 {
 const char* kUsage =
-	"usage: bsp_truth [--configs LIST] [--cases LIST] [--csv FILE] [--md FILE] [--timeout S] [--list]\n"
+	"usage: bsp_truth [--grid] [--configs LIST] [--cases LIST] [--csv FILE] [--md FILE] [--timeout S] [--list]\n"
+	"  --grid     the shape grid's 75 cases (columns stand, pushed stacks slide / stay, per shape and ground)\n"
+	"             instead of the truth suite's; --cases and --list then name grid cases\n"
 	"  --configs  comma-separated solver:iterations, e.g. si:10,si-sub4:10,sp:5,mlcp (iterations default 10);\n"
 	"             default: si at 1,2,5,10,20,50,100,200; si2f:10; si-sub2/4/8 at 10; nncg at 10, 50; mlcp;\n"
 	"             sp and sp-solver at 5, 10, 20; sp-classic:10\n"
 	"  --cases    comma-separated case or group names (default: every case)\n"
-	"  --csv      CSV output (default demos/charts/results/truth.csv under the source tree)\n"
+	"  --csv      CSV output (default demos/charts/results/truth.csv under the source tree; truth_grid.csv with --grid)\n"
 	"  --md       markdown table output (default: standard output)\n"
 	"  --timeout  seconds an MLCP case may take before it is skipped (default 20)\n"
 	"  --list     print the cases and exit\n"
@@ -211,7 +219,13 @@ std::string sourceTree()
 
 int main(int argc, char** argv)
 {
-	std::string configList = defaultConfigs(), caseList, csvPath = sourceTree() + "/demos/charts/results/truth.csv", mdPath;
+	// --grid anywhere on the line picks the case list before --list and --cases read it.
+	bool grid = false;
+	for (int i = 1; i < argc; ++i)
+		grid = grid || std::string(argv[i]) == "--grid";
+	const std::vector<truth::TruthCase>& allCases = grid ? truth::gridCases() : truth::truthCases();
+	std::string configList = defaultConfigs(), caseList, mdPath;
+	std::string csvPath = sourceTree() + (grid ? "/demos/charts/results/truth_grid.csv" : "/demos/charts/results/truth.csv");
 	double timeout = 20;
 	harness::PluginFlags plugin;  // applied to the plugin's configurations, every combination
 	bool pluginFlagsGiven = false;
@@ -226,14 +240,15 @@ int main(int argc, char** argv)
 			}
 			return argv[++i];
 		};
-		if (arg == "--configs") configList = value();
+		if (arg == "--grid") continue;  // read above
+		else if (arg == "--configs") configList = value();
 		else if (arg == "--cases") caseList = value();
 		else if (arg == "--csv") csvPath = value();
 		else if (arg == "--md") mdPath = value();
 		else if (arg == "--timeout") timeout = std::atof(value().c_str());
 		else if (arg == "--list")
 		{
-			for (const truth::TruthCase& c : truth::truthCases())
+			for (const truth::TruthCase& c : allCases)
 				std::cout << c.name << " (" << c.group << "): " << c.statement << "\n";
 			return 0;
 		}
@@ -291,7 +306,7 @@ int main(int argc, char** argv)
 	for (const std::string& w : wanted)
 	{
 		bool known = false;
-		for (const truth::TruthCase& c : truth::truthCases())
+		for (const truth::TruthCase& c : allCases)
 			known = known || c.name == w || c.group == w;
 		if (!known)
 		{
@@ -299,7 +314,7 @@ int main(int argc, char** argv)
 			return 2;
 		}
 	}
-	for (const truth::TruthCase& c : truth::truthCases())
+	for (const truth::TruthCase& c : allCases)
 	{
 		bool take = wanted.empty();
 		for (const std::string& w : wanted)
@@ -382,7 +397,30 @@ int main(int argc, char** argv)
 	}
 	md << "| **passed** |";
 	for (size_t k = 0; k < configs.size(); ++k) md << " " << passed[k] << "/" << cases.size() << " |";
-	md << "\n\n";
+	md << "\n";
+	if (grid)  // the grid's three statements apart
+	{
+		std::vector<std::string> groups;
+		for (const truth::TruthCase* c : cases)
+			if (std::find(groups.begin(), groups.end(), c->group) == groups.end()) groups.push_back(c->group);
+		for (const std::string& group : groups)
+		{
+			md << "| **passed, " << group << "** |";
+			for (size_t k = 0; k < configs.size(); ++k)
+			{
+				int n = 0, held = 0;
+				for (size_t ci = 0; ci < cases.size(); ++ci)
+				{
+					if (cases[ci]->group != group) continue;
+					++n;
+					held += (!results[ci][k].skipped && results[ci][k].verdict.pass) ? 1 : 0;
+				}
+				md << " " << held << "/" << n << " |";
+			}
+			md << "\n";
+		}
+	}
+	md << "\n";
 	for (const truth::TruthCase* c : cases) md << "- **" << c->name << "** (" << c->group << "): " << c->statement << "\n";
 	md << "\nbsp_truth: " << cases.size() << " cases x " << configs.size() << " configurations in " << figureText(totalSeconds) << " s; CSV: "
 	   << csvPath << "\n";

@@ -1,0 +1,131 @@
+// The shape grid as truth cases (include/truth/GridCases.h). Each case restates one cell of
+// tests/truth/ShapeGridTest.cpp or tests/truth/PushedGridTest.cpp; the expected values come from
+// statics and Coulomb friction (measurePushedStack computes (F - mu W) / M), never from a solver.
+#include <truth/GridCases.h>
+
+#include <harness/Trial.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace truth
+{
+namespace
+{
+constexpr double kTogether = 0.01;      // m: "within 1 cm", "apart < 1 cm", "at rest"
+constexpr double kRateTolerance = 0.1;  // the acceleration within 10% of Coulomb's
+constexpr int kColumnSteps = 600;       // 10 s at 60 Hz (harness::Trial's default time step)
+constexpr double kSlides = 1.4, kStays = 0.6;  // the push in units of mu W
+
+struct Kind
+{
+	int id;
+	const char* name;
+};
+// The names of the ctest grid's cells (ShapeGridTest's and PushedGridTest's cellName).
+const Kind kShapes[] = {{0, "box"}, {1, "hull"}, {3, "prism"}, {4, "cylinder"}, {5, "compound"}};
+const Kind kGrounds[] = {{0, "onBox"}, {1, "onPlane"}, {2, "onMesh"}, {3, "onMeshEdges"}, {4, "onHeightfield"}};
+const char* kShapeWords[] = {"boxes", "hulls", "hulls with features", "hexagonal prisms", "cylinders", "compounds"};
+const char* kGroundWords[] = {"a box", "a plane", "a triangle mesh", "a triangle mesh with internal-edge adjustment", "a heightfield"};
+
+std::string format(const char* pattern, double a = 0, double b = 0, double c = 0, double d = 0, double e = 0)
+{
+	char buffer[320];
+	std::snprintf(buffer, sizeof buffer, pattern, a, b, c, d, e);
+	return buffer;
+}
+
+/// ShapeGridTest: a column of 10 equal bodies (1 m wide, 0.5 m tall, 1 kg, mu 0.6) stands.
+Verdict columnStands(const harness::SolverSpec& spec, int shape, int ground)
+{
+	harness::Trial trial(spec, "shape_column", {{"shape", shape}, {"ground", ground}});
+	for (int k = 0; k < kColumnSteps; ++k) trial.step();
+	const harness::TrialSummary s = trial.summary();
+	Verdict v;
+	v.unit = "m";
+	v.figure = s.maxDrift;
+	v.expected = 0;
+	v.pass = !s.nonFinite && s.maxDrift < kTogether;
+	v.detail = format("column of 10 in equilibrium: must stand; largest drift %.4f m in 10 s (limit 0.01)", s.maxDrift);
+	if (s.nonFinite) v.detail += "; non-finite state";
+	v.msPerStep = s.msPerStep;
+	return v;
+}
+
+/// PushedGridTest: the truth case PushedStack's statement on this shape and ground.
+Verdict pushedStack(const harness::SolverSpec& spec, int shape, int ground, double fraction)
+{
+	const PushedStack p = measurePushedStack(spec, fraction, {{"shape", shape}, {"ground", ground}});
+	const bool slides = fraction > 1;
+	Verdict v;
+	if (!slides)
+	{
+		v.unit = "m";
+		v.figure = p.maxDrift;
+		v.expected = 0;
+		v.pass = !p.nonFinite && p.maxDrift < kTogether;
+		v.detail = format("F = %.2f mu W: must stay at rest; largest drift %.4f m in 3 s (limit 0.01)", fraction, p.maxDrift);
+	}
+	else
+	{
+		v.unit = "m/s^2";
+		v.figure = p.acceleration;
+		v.expected = p.expected;
+		v.pass = !p.nonFinite && std::fabs(p.acceleration - p.expected) <= kRateTolerance * p.expected && p.apart < kTogether;
+		v.detail = format("F = %.2f mu W: a = %.3f m/s^2 against (F - mu W) / M = %.3f (within 10%%); bodies apart by %.4f m (limit 0.01)",
+						  fraction, p.acceleration, p.expected, p.apart);
+	}
+	if (p.nonFinite) v.detail += "; non-finite state";
+	v.msPerStep = p.msPerStep;
+	return v;
+}
+
+std::string cell(const Kind& shape, const Kind& ground) { return std::string(shape.name) + "_" + ground.name; }
+
+}  // namespace
+
+const std::vector<TruthCase>& gridCases()
+{
+	static const std::vector<TruthCase> cases = [] {
+		std::vector<TruthCase> all;
+		for (const Kind& shape : kShapes)
+		{
+			for (const Kind& ground : kGrounds)
+			{
+				TruthCase c;
+				c.name = "Column_" + cell(shape, ground) + "_Stands";
+				c.group = "grid_column";
+				c.statement = std::string("a column of 10 ") + kShapeWords[shape.id] + " (1 m wide, 0.5 m tall, 1 kg, mu 0.6) on " +
+							  kGroundWords[ground.id] + " is in equilibrium and stands: every body within 1 cm for 10 s";
+				const int s = shape.id, g = ground.id;
+				c.run = [s, g](const harness::SolverSpec& spec) { return columnStands(spec, s, g); };
+				all.push_back(c);
+			}
+		}
+		for (const double fraction : {kSlides, kStays})
+		{
+			const bool slides = fraction > 1;
+			for (const Kind& shape : kShapes)
+			{
+				for (const Kind& ground : kGrounds)
+				{
+					TruthCase c;
+					c.name = "Pushed_" + cell(shape, ground) + (slides ? "_F140_SlidesTogether" : "_F060_AtRest");
+					c.group = slides ? "grid_slides" : "grid_stays";
+					c.statement = std::string("5 stacked ") + kShapeWords[shape.id] + " (1 kg, ground mu 0.5, body-body mu 1) on " +
+								  kGroundWords[ground.id] + " pushed at the bottom with " +
+								  (slides ? "1.4 mu W slide as one at (F - mu W) / M within 10%, no body more than 1 cm from where the "
+											"bottom one carries it"
+										  : "0.6 mu W stay at rest: no body drifts 1 cm (Coulomb: F <= mu W)");
+					const int s = shape.id, g = ground.id;
+					c.run = [s, g, fraction](const harness::SolverSpec& spec) { return pushedStack(spec, s, g, fraction); };
+					all.push_back(c);
+				}
+			}
+		}
+		return all;
+	}();
+	return cases;
+}
+}  // namespace truth
