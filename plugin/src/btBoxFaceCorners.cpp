@@ -13,6 +13,7 @@ subject to the following restrictions:
 */
 
 #include "btBoxFaceCorners.h"
+#include "btContactPatch.h"
 
 #include "BulletShockPropagation/btShockPropagationSettings.h"
 
@@ -106,25 +107,7 @@ int btKeepBoxFaceCorners(btPersistentManifold& manifold, btScalar reach)
 			for (int j = 0; j < manifold.getNumContacts() && !present; ++j)
 				present = (manifold.getContactPoint(j).getPositionWorldOnA() - onA).length2() < sameSpot2;
 			if (present) continue;
-			btManifoldPoint point = reference;  // the pair's combined coefficients, flags and frames
-			point.m_localPointA = objectA->getWorldTransform().invXform(onA);
-			point.m_localPointB = objectB->getWorldTransform().invXform(onB);
-			point.m_positionWorldOnA = onA;
-			point.m_positionWorldOnB = onB;
-			point.m_distance1 = distance;
-			point.m_lifeTime = 0;
-			point.m_userPersistentData = 0;
-			point.m_appliedImpulse = 0;
-			point.m_prevRHS = 0;
-			point.m_appliedImpulseLateral1 = 0;
-			point.m_appliedImpulseLateral2 = 0;
-			point.m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
-			if (gContactAddedCallback && ((objectA->getCollisionFlags() | objectB->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK))
-			{
-				const btCollisionObjectWrapper wrapA(0, objectA->getCollisionShape(), objectA, objectA->getWorldTransform(), point.m_partId0, point.m_index0);
-				const btCollisionObjectWrapper wrapB(0, objectB->getCollisionShape(), objectB, objectB->getWorldTransform(), point.m_partId1, point.m_index1);
-				(*gContactAddedCallback)(point, &wrapA, point.m_partId0, point.m_index0, &wrapB, point.m_partId1, point.m_index1);
-			}
+			const btManifoldPoint point = btAddedContactPoint(reference, objectA, objectB, onA, onB, distance, n);
 			manifold.addManifoldPoint(point);
 			++added;
 		}

@@ -237,6 +237,32 @@ bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
 }
 }  // namespace
 
+btManifoldPoint btAddedContactPoint(const btManifoldPoint& reference, const btCollisionObject* objectA, const btCollisionObject* objectB,
+									const btVector3& onA, const btVector3& onB, btScalar distance, const btVector3& normal)
+{
+	btManifoldPoint point = reference;  // the pair's combined coefficients, flags and frames
+	point.m_normalWorldOnB = normal;
+	point.m_localPointA = objectA->getWorldTransform().invXform(onA);
+	point.m_localPointB = objectB->getWorldTransform().invXform(onB);
+	point.m_positionWorldOnA = onA;
+	point.m_positionWorldOnB = onB;
+	point.m_distance1 = distance;
+	point.m_lifeTime = 0;
+	point.m_userPersistentData = 0;
+	point.m_appliedImpulse = 0;
+	point.m_prevRHS = 0;
+	point.m_appliedImpulseLateral1 = 0;
+	point.m_appliedImpulseLateral2 = 0;
+	point.m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+	if (gContactAddedCallback && ((objectA->getCollisionFlags() | objectB->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK))
+	{
+		const btCollisionObjectWrapper wrapA(0, objectA->getCollisionShape(), objectA, objectA->getWorldTransform(), point.m_partId0, point.m_index0);
+		const btCollisionObjectWrapper wrapB(0, objectB->getCollisionShape(), objectB, objectB->getWorldTransform(), point.m_partId1, point.m_index1);
+		(*gContactAddedCallback)(point, &wrapA, point.m_partId0, point.m_index0, &wrapB, point.m_partId1, point.m_index1);
+	}
+	return point;
+}
+
 int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btScalar keepDepth)
 {
 	const int initial = manifold.getNumContacts();
@@ -384,29 +410,8 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 	// A new point at candidate c: the pair's combined coefficients, flags and frames from the
 	// manifold's first point, the app's callback run where a body asks for it.
 	auto makePoint = [&](int c) {
-		const btVector3 onA = candidateA[c];
-		const btVector3 onB = onA - candidateNormal[c] * candidateDistance[c];
-		btManifoldPoint point = reference;
-		point.m_normalWorldOnB = candidateNormal[c];
-		point.m_localPointA = objectA->getWorldTransform().invXform(onA);
-		point.m_localPointB = objectB->getWorldTransform().invXform(onB);
-		point.m_positionWorldOnA = onA;
-		point.m_positionWorldOnB = onB;
-		point.m_distance1 = candidateDistance[c];
-		point.m_lifeTime = 0;
-		point.m_userPersistentData = 0;
-		point.m_appliedImpulse = 0;
-		point.m_prevRHS = 0;
-		point.m_appliedImpulseLateral1 = 0;
-		point.m_appliedImpulseLateral2 = 0;
-		point.m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
-		if (gContactAddedCallback && ((objectA->getCollisionFlags() | objectB->getCollisionFlags()) & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK))
-		{
-			const btCollisionObjectWrapper wrapA(0, objectA->getCollisionShape(), objectA, objectA->getWorldTransform(), point.m_partId0, point.m_index0);
-			const btCollisionObjectWrapper wrapB(0, objectB->getCollisionShape(), objectB, objectB->getWorldTransform(), point.m_partId1, point.m_index1);
-			(*gContactAddedCallback)(point, &wrapA, point.m_partId0, point.m_index0, &wrapB, point.m_partId1, point.m_index1);
-		}
-		return point;
+		return btAddedContactPoint(reference, objectA, objectB, candidateA[c], candidateA[c] - candidateNormal[c] * candidateDistance[c],
+								   candidateDistance[c], candidateNormal[c]);
 	};
 	const btScalar sameSpot2 = breaking * breaking;
 	auto gapToPoints = [&](int c) {

@@ -17,7 +17,17 @@ subject to the following restrictions:
 
 #include "LinearMath/btScalar.h"
 
+#include "BulletCollision/NarrowPhaseCollision/btManifoldPoint.h"
+
+class btCollisionObject;
 class btPersistentManifold;
+
+/// A contact point the plugin adds to a manifold (D30, D33): `reference`'s combined coefficients,
+/// flags and part ids, at onA / onB with `distance` along `normal` (from B into A), no impulse and no
+/// user data; gContactAddedCallback is called for it where either body asks for it
+/// (CF_CUSTOM_MATERIAL_CALLBACK), as btManifoldResult does.
+btManifoldPoint btAddedContactPoint(const btManifoldPoint& reference, const btCollisionObject* objectA, const btCollisionObject* objectB,
+									const btVector3& onA, const btVector3& onB, btScalar distance, const btVector3& normal);
 
 /// D33 (docs/design.md, section 11): a convex face resting on another face gets its whole patch.
 ///

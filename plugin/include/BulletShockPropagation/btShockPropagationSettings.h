@@ -38,8 +38,9 @@ struct btShockPropagationNumerics
 	/// Largest cluster (bodies) whose rows are tested together for grounding: (6 n)^3 / 6 = 9.4e6
 	/// multiply-adds at 64, about the capped sweeps' cost over its rows (docs/design.md, 4.2).
 	static int maxClusterBodies() { return 64; }
-	/// Cosine (unitless) within which a box face counts as facing a contact normal, for keeping
-	/// the corners of a resting box face (D30; docs/design.md, section 11).
+	/// Cosine (unitless) within which a face counts as facing a contact normal: a box face whose
+	/// corners are kept (D30), a face or a mesh triangle whose normal a resting patch takes (D33;
+	/// docs/design.md, section 11).
 	static btScalar faceAlignment() { return btScalar(0.99); }
 };
 
@@ -101,8 +102,8 @@ struct btShockPropagationDiagnostics
 	/// contact counts as support; steeper contacts are side contacts. 1.0472 = 60 degrees.
 	btScalar m_supportAngle = btScalar(1.0471975511965976);
 
-	/// D30, as a share of |g| dt^2 (unitless): how far outside the face below a box corner may be and
-	/// still be kept as a contact point by m_keepBoxFaceCorners (27 micrometres at 9.81 m/s^2 and
+	/// D30 and D33, as a share of |g| dt^2 (unitless): how far outside the face below a box corner
+	/// (or a face's rim point) may be and still be kept as a contact point by m_keepBoxFaceCorners (27 micrometres at 9.81 m/s^2 and
 	/// 60 Hz; the corners Bullet's box-box test dropped under a sliding stack were 6 micrometres out
 	/// at most, docs/design.md, D30). Inside the face a corner is kept down to the manifold's
 	/// breaking threshold.
