@@ -18,6 +18,8 @@ subject to the following restrictions:
 #include "BulletCollision/CollisionDispatch/btCollisionDispatcher.h"
 #include "BulletCollision/CollisionDispatch/btManifoldResult.h"
 #include "BulletCollision/CollisionShapes/btCollisionShape.h"
+#include "BulletCollision/CollisionShapes/btCompoundShape.h"
+#include "BulletCollision/CollisionShapes/btConvexHullShape.h"
 #include "BulletCollision/NarrowPhaseCollision/btPersistentManifold.h"
 #include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
 #include "LinearMath/btQuickprof.h"
@@ -36,6 +38,20 @@ btShockPropagationConstraintSolver* requireShockSolver(btConstraintSolver* solve
 			"to use another solver, use btDiscreteDynamicsWorld");
 	}
 	return shock;
+}
+
+/// A btConvexHullShape without points in `shape` (itself or, recursively, a compound's child).
+bool hasEmptyHull(const btCollisionShape* shape)
+{
+	if (!shape) return false;
+	if (shape->getShapeType() == CONVEX_HULL_SHAPE_PROXYTYPE) return static_cast<const btConvexHullShape*>(shape)->getNumPoints() == 0;
+	if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE)
+	{
+		const btCompoundShape* compound = static_cast<const btCompoundShape*>(shape);
+		for (int i = 0; i < compound->getNumChildShapes(); ++i)
+			if (hasEmptyHull(compound->getChildShape(i))) return true;
+	}
+	return false;
 }
 
 btConstraintSolver* solverOrNew(btConstraintSolver* solver)
@@ -126,6 +142,19 @@ btShockPropagationDynamicsWorld::btShockPropagationDynamicsWorld(btDispatcher* d
 
 btShockPropagationDynamicsWorld::~btShockPropagationDynamicsWorld()
 {
+}
+
+void btShockPropagationDynamicsWorld::addCollisionObject(btCollisionObject* collisionObject, int collisionFilterGroup, int collisionFilterMask)
+{
+	if (collisionObject && hasEmptyHull(collisionObject->getCollisionShape()))
+	{
+		// addRigidBody listed the body before calling this: the world must not keep it.
+		if (btRigidBody* body = btRigidBody::upcast(collisionObject)) m_nonStaticRigidBodies.remove(body);
+		throw std::invalid_argument(
+			"btShockPropagationDynamicsWorld: a btConvexHullShape without points cannot collide (Bullet's support function "
+			"reads its point 0: stock Bullet crashes on it too); give the hull at least one point");
+	}
+	btDiscreteDynamicsWorld::addCollisionObject(collisionObject, collisionFilterGroup, collisionFilterMask);
 }
 
 void btShockPropagationDynamicsWorld::setConstraintSolver(btConstraintSolver* solver)

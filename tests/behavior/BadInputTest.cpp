@@ -147,7 +147,8 @@ TEST(BadInput, ConstraintBetweenTwoStaticBodiesIsHarmless)
 // The behaviours, all Bullet's own (the plugin adds nothing for these shapes):
 // - a convex hull of 1-3 points collides as its points rounded by the collision margin (0.04 m) and
 //   rests on the ground at that height. A hull of 0 points crashes Bullet's collision detection
-//   (below): an app must not add one;
+//   (below): the plugin world refuses it with std::invalid_argument when it is added; in a stock
+//   world (stock or solver-only mode) an app must not add one;
 // - a sphere of radius 0 has no margin: a point, which rests on the ground (within 1 cm);
 // - an empty btCompoundShape collides with nothing and falls freely through the ground. Bullet's
 //   calculateLocalInertia gives it zero inertia (its AABB has no extent and the compound's margin is
@@ -332,9 +333,26 @@ TEST(BadInput, ConvexHullOfFewerThanFourPointsRestsBesideAStack)
 	// empty array, a null pointer, from GJK in the first collision test with the ground (step 16): a
 	// crash (SIGSEGV) in every mode, stock included, inside performDiscreteCollisionDetection before
 	// any solver runs. Pinned here so that a change (a clear error instead) shows.
+	// The plugin world refuses such a body with a clear error when it is added; the others crash.
 	::testing::FLAGS_gtest_death_test_style = "threadsafe";
 	for (harness::SolverKind kind : kModes)
-		EXPECT_DEATH(dropHullBesideStack(kind, {}), "") << modeName(kind);
+	{
+		if (kind == harness::SolverKind::ShockWorld)
+			EXPECT_THROW(dropHullBesideStack(kind, {}), std::invalid_argument) << modeName(kind);
+		else
+			EXPECT_DEATH(dropHullBesideStack(kind, {}), "") << modeName(kind);
+	}
+}
+
+TEST(BadInput, WorldThatRefusedAnEmptyHullStepsOn)
+{
+	// The refusal leaves the world as it was: the stack beside it steps on and stands.
+	StackBeside s(harness::SolverKind::ShockWorld, groundBox(), groundBoxAt());
+	EXPECT_THROW(s.addOdd(new btConvexHullShape(), oddStart()), std::invalid_argument);
+	EXPECT_EQ(s.sim.world().getNumCollisionObjects(), 4);  // the ground and the three boxes
+	const Outcome out = s.run(kDegenerateSteps);
+	EXPECT_EQ(out.firstNonFiniteStep, 0) << out.nonFiniteBody;
+	EXPECT_LT(out.stackDrift, harness::kStandingDriftMeters);
 }
 
 TEST(BadInput, SphereOfRadiusZeroRestsBesideAStack)

@@ -132,8 +132,8 @@ btRigidBody* SceneContent::addBody(btCollisionShape* shape, btScalar mass, const
 	btRigidBody* body = new btRigidBody(info);
 	if (mass > 0)
 		body->setActivationState(DISABLE_DEACTIVATION);  // sleeping would hide a collapse
+	m_bodies.push_back(body);  // owned before it is added: a world that refuses it throws
 	m_world->addRigidBody(body);
-	m_bodies.push_back(body);
 	return body;
 }
 

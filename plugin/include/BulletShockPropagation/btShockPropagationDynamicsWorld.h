@@ -86,6 +86,14 @@ public:
 	/// the world created (constructed with nullptr) is destroyed; the new one stays the caller's.
 	virtual void setConstraintSolver(btConstraintSolver* solver) BT_OVERRIDE;
 
+	/// Bullet's, after a check of the object's shape: a btConvexHullShape without points (alone or
+	/// a compound's child) throws std::invalid_argument. Bullet's support function reads such a
+	/// hull's point 0, so the first collision test that reaches it crashes, in stock Bullet too; a
+	/// world that owns the step can say so when the body is added (in solver-only mode the crash
+	/// happens in the app's world, before the solver runs).
+	virtual void addCollisionObject(btCollisionObject * collisionObject, int collisionFilterGroup = btBroadphaseProxy::StaticFilter,
+									int collisionFilterMask = btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter) BT_OVERRIDE;
+
 	btShockPropagationConstraintSolver* getShockPropagationSolver() { return m_shockSolver; }
 	const btShockPropagationConstraintSolver* getShockPropagationSolver() const { return m_shockSolver; }
 
