@@ -367,19 +367,11 @@ def plot_truth_grid(rows, out_dir):
 def plot_truth(rows, out_dir):
     """Truths passed against mean ms per step over the cases, one point per configuration."""
     cases = list(dict.fromkeys(r["case"] for r in rows))
-    configs = list(dict.fromkeys((r["config"], int(r["iterations"])) for r in rows))
     fig, ax = plt.subplots(figsize=(9, 5.5))
     seen = set()
     placed = {}  # truths passed -> log10(ms) of the labels already at that height
-    for config, iterations in configs:
-        mine = [r for r in rows if r["config"] == config and int(r["iterations"]) == iterations]
-        ran = [r for r in mine if r["pass"] != "skipped" and not math.isnan(num(r["msPerStep"]))]
-        if not ran:
-            continue
-        passed = sum(1 for r in ran if r["pass"] == "1")
-        ms = sum(num(r["msPerStep"]) for r in ran) / len(ran)
+    for config, iterations, passed, ms, skipped in truth_points(rows):
         color, marker = TRUTH_STYLE.get(config, ("black", "o"))
-        skipped = len(mine) - len(ran)
         ax.scatter([ms], [passed], color=color if not skipped else "white", edgecolors=color, marker=marker, s=70, zorder=3,
                    label=config if config not in seen else None)
         seen.add(config)

@@ -14,7 +14,6 @@ namespace truth
 namespace
 {
 constexpr double kTogether = 0.01;      // m: "within 1 cm", "apart < 1 cm", "at rest"
-constexpr double kRateTolerance = 0.1;  // the acceleration within 10% of Coulomb's
 constexpr int kColumnSteps = 600;       // 10 s at 60 Hz (harness::Trial's default time step)
 constexpr double kSlides = 1.4, kStays = 0.6;  // the push in units of mu W
 
@@ -53,33 +52,6 @@ Verdict columnStands(const harness::SolverSpec& spec, int shape, int ground)
 	return v;
 }
 
-/// PushedGridTest: the truth case PushedStack's statement on this shape and ground.
-Verdict pushedStack(const harness::SolverSpec& spec, int shape, int ground, double fraction)
-{
-	const PushedStack p = measurePushedStack(spec, fraction, {{"shape", shape}, {"ground", ground}});
-	const bool slides = fraction > 1;
-	Verdict v;
-	if (!slides)
-	{
-		v.unit = "m";
-		v.figure = p.maxDrift;
-		v.expected = 0;
-		v.pass = !p.nonFinite && p.maxDrift < kTogether;
-		v.detail = format("F = %.2f mu W: must stay at rest; largest drift %.4f m in 3 s (limit 0.01)", fraction, p.maxDrift);
-	}
-	else
-	{
-		v.unit = "m/s^2";
-		v.figure = p.acceleration;
-		v.expected = p.expected;
-		v.pass = !p.nonFinite && std::fabs(p.acceleration - p.expected) <= kRateTolerance * p.expected && p.apart < kTogether;
-		v.detail = format("F = %.2f mu W: a = %.3f m/s^2 against (F - mu W) / M = %.3f (within 10%%); bodies apart by %.4f m (limit 0.01)",
-						  fraction, p.acceleration, p.expected, p.apart);
-	}
-	if (p.nonFinite) v.detail += "; non-finite state";
-	v.msPerStep = p.msPerStep;
-	return v;
-}
 
 std::string cell(const Kind& shape, const Kind& ground) { return std::string(shape.name) + "_" + ground.name; }
 
@@ -119,7 +91,7 @@ const std::vector<TruthCase>& gridCases()
 											"bottom one carries it"
 										  : "0.6 mu W stay at rest: no body drifts 1 cm (Coulomb: F <= mu W)");
 					const int s = shape.id, g = ground.id;
-					c.run = [s, g, fraction](const harness::SolverSpec& spec) { return pushedStack(spec, s, g, fraction); };
+					c.run = [s, g, fraction](const harness::SolverSpec& spec) { return pushedStackVerdict(spec, fraction, {{"shape", s}, {"ground", g}}); };
 					all.push_back(c);
 				}
 			}

@@ -227,30 +227,6 @@ constexpr double kPushGroundMu = 0.5;
 constexpr double kPushSlideSeconds = 2.0;  // s, measured when it slides
 constexpr double kPushRestSeconds = 3.0;   // s, measured when it must stay at rest
 
-Verdict pushedStack(const harness::SolverSpec& spec, double capacityFraction)
-{
-	const PushedStack p = measurePushedStack(spec, capacityFraction);
-	const bool slides = capacityFraction > 1;
-	Verdict v;
-	if (!slides)
-	{
-		v.unit = "m";
-		v.figure = p.maxDrift;
-		v.expected = 0;
-		v.pass = p.maxDrift < kRestToleranceMeters && !p.nonFinite;
-		v.detail = format("F = %.2f mu W = %.2f N < mu W = %.2f N: must stay at rest; largest drift %.4f m in %.0f s (limit 0.01)",
-						  capacityFraction, p.force, p.force / capacityFraction, p.maxDrift, kPushRestSeconds);
-	}
-	else
-	{
-		slidesTogether(v, p.acceleration, p.expected, p.apart, p.nonFinite);
-		v.detail = format("F = %.2f mu W: a = %.3f m/s^2 against (F - mu W) / M = %.3f (within 10%%); boxes apart by %.4f m (limit 0.01)",
-						  capacityFraction, p.acceleration, p.expected, p.apart);
-	}
-	if (p.nonFinite) v.detail += "; non-finite state";
-	v.msPerStep = p.msPerStep;
-	return v;
-}
 
 // Stack on a ramp (truth/ramp_stack): 3 boxes of 1 kg, 1 x 0.5 x 1 m, on a 20 degree ramp; box-ramp mu
 // (ramp friction mu, box friction 1) and box-box mu = 1. Coulomb: the stack sticks iff mu >= tan(20 deg)
@@ -317,7 +293,7 @@ void addFrictionCases(std::vector<TruthCase>& cases)
 		c.group = "friction";
 		c.statement = slides ? "5 boxes pushed at the bottom with 1.4 mu W slide as one at (F - mu W) / M (box-box mu 1 holds them together)"
 							 : "5 boxes pushed at the bottom with 0.6 mu W stay at rest (Coulomb: F <= mu W)";
-		c.run = [fraction](const harness::SolverSpec& spec) { return pushedStack(spec, fraction); };
+		c.run = [fraction](const harness::SolverSpec& spec) { return pushedStackVerdict(spec, fraction); };
 		cases.push_back(c);
 	}
 	for (double mu : {0.5, 0.2})
@@ -468,6 +444,31 @@ void addLeverCases(std::vector<TruthCase>& cases)
 	}
 }
 }  // namespace
+
+Verdict pushedStackVerdict(const harness::SolverSpec& spec, double capacityFraction, const std::vector<std::pair<std::string, double>>& sceneOverrides)
+{
+	const PushedStack p = measurePushedStack(spec, capacityFraction, sceneOverrides);
+	const bool slides = capacityFraction > 1;
+	Verdict v;
+	if (!slides)
+	{
+		v.unit = "m";
+		v.figure = p.maxDrift;
+		v.expected = 0;
+		v.pass = p.maxDrift < kRestToleranceMeters && !p.nonFinite;
+		v.detail = format("F = %.2f mu W = %.2f N < mu W = %.2f N: must stay at rest; largest drift %.4f m in %.0f s (limit 0.01)",
+						  capacityFraction, p.force, p.force / capacityFraction, p.maxDrift, kPushRestSeconds);
+	}
+	else
+	{
+		slidesTogether(v, p.acceleration, p.expected, p.apart, p.nonFinite);
+		v.detail = format("F = %.2f mu W: a = %.3f m/s^2 against (F - mu W) / M = %.3f (within 10%%); bodies apart by %.4f m (limit 0.01)",
+						  capacityFraction, p.acceleration, p.expected, p.apart);
+	}
+	if (p.nonFinite) v.detail += "; non-finite state";
+	v.msPerStep = p.msPerStep;
+	return v;
+}
 
 PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction, const Overrides& sceneOverrides)
 {

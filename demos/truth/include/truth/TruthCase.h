@@ -65,6 +65,12 @@ struct PushedStack
 PushedStack measurePushedStack(const harness::SolverSpec& solver, double capacityFraction,
 							   const std::vector<std::pair<std::string, double>>& sceneOverrides = {});
 
+/// The pushed stack's physics statement as a verdict: at rest (within 1 cm) when capacityFraction
+/// <= 1, else sliding as one at Coulomb's rate (within 10%, bodies within 1 cm of each other);
+/// sceneOverrides as for measurePushedStack (the truth case and the shape grid share it).
+Verdict pushedStackVerdict(const harness::SolverSpec& solver, double capacityFraction,
+						   const std::vector<std::pair<std::string, double>>& sceneOverrides = {});
+
 /// Cases defined in src/StaticsCases.cpp and src/DynamicsCases.cpp.
 void addStaticsCases(std::vector<TruthCase>& cases);
 void addDynamicsCases(std::vector<TruthCase>& cases);
