@@ -233,6 +233,11 @@ std::vector<RatioCase> ratioCases()
 		{"boxes_3000 (10 s)", "boxes_3000", {}, 600},
 		{"dense_random pile (10 s)", "dense_random", {}, 600},
 		{"basic_demo_block (5 s)", "basic_demo_block", {}, 300},
+		// Issue 37's shape grid: columns of 10 bodies of other shapes on other grounds.
+		{"hull column on heightfield (10 s)", "shape_column", {{"shape", 1}, {"ground", 4}}, 600},
+		{"prism column on box (10 s)", "shape_column", {{"shape", 3}, {"ground", 0}}, 600},
+		{"cylinder column on mesh (10 s)", "shape_column", {{"shape", 4}, {"ground", 2}}, 600},
+		{"compound column on plane (10 s)", "shape_column", {{"shape", 5}, {"ground", 1}}, 600},
 	};
 }
 
