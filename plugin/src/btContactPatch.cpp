@@ -45,6 +45,8 @@ struct PatchSide
 	btScalar rimU[kRim], rimV[kRim];  // the rim in the tangent plane's coordinates
 	int rimCount = 0;                 // distinct rim points (in order around the normal)
 	bool flatRim = false;             // the rim points lie in one plane across the normal: a face
+	btVector3 rimNormal = btVector3(0, 0, 0);  // the rim polygon's unit normal (Newell's), either way round
+	btScalar rimTwiceArea = 0;        // the rim polygon's signed area in (u, v), doubled (m^2)
 };
 
 /// The shape a manifold of `object` touches and its world frame: the body's shape, or for a
@@ -104,15 +106,21 @@ bool describeSide(const btCollisionShape* shape, const btTransform& frame, const
 	if (side.rimCount >= 3)
 	{
 		btVector3 normal(0, 0, 0);  // Newell's: the rim polygon's own normal
-		for (int k = 0; k < side.rimCount; ++k) normal += side.rim[k].cross(side.rim[(k + 1) % side.rimCount]);
-		if (normal.length2() > SIMD_EPSILON * SIMD_EPSILON)
+		for (int k = 0; k < side.rimCount; ++k)
 		{
-			normal.normalize();
+			const int next = (k + 1) % side.rimCount;
+			normal += side.rim[k].cross(side.rim[next]);
+			side.rimTwiceArea += side.rimU[k] * side.rimV[next] - side.rimU[next] * side.rimV[k];
+		}
+		const btScalar length = normal.length();
+		if (length > SIMD_EPSILON)
+		{
+			side.rimNormal = normal / length;
 			btScalar low = BT_LARGE_FLOAT, high = -BT_LARGE_FLOAT;
 			for (int k = 0; k < side.rimCount; ++k)
 			{
-				low = btMin(low, (side.rim[k] - side.rim[0]).dot(normal));
-				high = btMax(high, (side.rim[k] - side.rim[0]).dot(normal));
+				low = btMin(low, (side.rim[k] - side.rim[0]).dot(side.rimNormal));
+				high = btMax(high, (side.rim[k] - side.rim[0]).dot(side.rimNormal));
 			}
 			side.flatRim = high - low <= flatness;
 		}
@@ -183,31 +191,32 @@ btScalar hullArea4(const btScalar* u, const btScalar* v)
 	return best / 2;
 }
 
-/// Area of the side's rim polygon (m^2).
-btScalar rimArea(const PatchSide& side)
-{
-	btScalar area = 0;
-	for (int i = 0; i < side.rimCount; ++i)
-	{
-		const int j = (i + 1) % side.rimCount;
-		area += side.rimU[i] * side.rimV[j] - side.rimU[j] * side.rimV[i];
-	}
-	return btFabs(area) / 2;
-}
-
-/// The unit normal of the side's rim polygon turned along `along` (Newell's sum), or zero if the
-/// rim is not a face (a point or a line) or the side is flat ground.
+/// The unit normal of the side's face turned along `along`: a flat ground's plane, a flat rim's
+/// polygon; zero if the rim is not a face (a point, a line, a corner).
 btVector3 faceNormal(const PatchSide& side, const btVector3& along)
 {
-	btVector3 sum(0, 0, 0);
-	if (side.flat) return side.planeNormal.dot(along) < 0 ? -side.planeNormal : side.planeNormal;
-	if (!side.convex || side.rimCount < 3 || !side.flatRim) return sum;
-	for (int i = 0; i < side.rimCount; ++i)
-		sum += side.rim[i].cross(side.rim[(i + 1) % side.rimCount]);
-	const btScalar length = sum.length();
-	if (!(length > SIMD_EPSILON)) return btVector3(0, 0, 0);
-	sum /= length;
-	return sum.dot(along) < 0 ? -sum : sum;
+	const btVector3 normal = side.flat ? side.planeNormal : (side.convex && side.flatRim ? side.rimNormal : btVector3(0, 0, 0));
+	return normal.dot(along) < 0 ? -normal : normal;
+}
+
+/// Gives the point `normal` (from B into A) and `distance`, keeping its place on one body and moving
+/// it along the normal on the other (B's point if `moveB`): the moved point lies on the reference
+/// face's plane, the kept one stays on its own body's surface.
+void placeAlong(btManifoldPoint& p, const btVector3& normal, btScalar distance, bool moveB, const btCollisionObject* objectA,
+				const btCollisionObject* objectB)
+{
+	p.m_normalWorldOnB = normal;
+	p.m_distance1 = distance;
+	if (moveB)
+	{
+		p.m_positionWorldOnB = p.getPositionWorldOnA() - normal * distance;
+		p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
+	}
+	else
+	{
+		p.m_positionWorldOnA = p.getPositionWorldOnB() + normal * distance;
+		p.m_localPointA = objectA->getWorldTransform().invXform(p.m_positionWorldOnA);
+	}
 }
 
 /// Whether (u, v) lies inside the side's rim polygon (ordered around n), within `slack` (m).
@@ -216,14 +225,8 @@ bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
 	if (side.flat) return true;
 	if (side.rimCount < 3 || !side.flatRim) return false;  // a point, a line or a corner: no face to rest on
 	// The polygon's orientation from its area, so the test holds either way round.
-	btScalar area = 0;
-	for (int i = 0; i < side.rimCount; ++i)
-	{
-		const int j = (i + 1) % side.rimCount;
-		area += side.rimU[i] * side.rimV[j] - side.rimU[j] * side.rimV[i];
-	}
-	if (!(btFabs(area) > slack * slack)) return false;
-	const btScalar orientation = area > 0 ? btScalar(1) : btScalar(-1);
+	if (!(btFabs(side.rimTwiceArea) > slack * slack)) return false;
+	const btScalar orientation = side.rimTwiceArea > 0 ? btScalar(1) : btScalar(-1);
 	for (int i = 0; i < side.rimCount; ++i)
 	{
 		const int j = (i + 1) % side.rimCount;
@@ -308,7 +311,7 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 	else if (objectB->isStaticOrKinematicObject() && !faceB.isZero())
 		referenceSide = 1;
 	else if (!faceA.isZero() && !faceB.isZero())
-		referenceSide = rimArea(sides[0]) > rimArea(sides[1]) ? 0 : 1;
+		referenceSide = btFabs(sides[0].rimTwiceArea) > btFabs(sides[1].rimTwiceArea) ? 0 : 1;
 	else if (!faceA.isZero() || !faceB.isZero())
 		referenceSide = faceA.isZero() ? 1 : 0;
 	const btVector3 face = referenceSide == 0 ? faceA : (referenceSide == 1 ? faceB : btVector3(0, 0, 0));
@@ -318,19 +321,7 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 		for (int j = 0; j < initial; ++j)
 		{
 			btManifoldPoint& p = manifold.getContactPoint(j);
-			const btScalar distance = (p.getPositionWorldOnA() - p.getPositionWorldOnB()).dot(n);
-			p.m_normalWorldOnB = n;
-			p.m_distance1 = distance;
-			if (referenceSide == 1)
-			{
-				p.m_positionWorldOnB = p.getPositionWorldOnA() - n * distance;
-				p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
-			}
-			else
-			{
-				p.m_positionWorldOnA = p.getPositionWorldOnB() + n * distance;
-				p.m_localPointA = objectA->getWorldTransform().invXform(p.m_positionWorldOnA);
-			}
+			placeAlong(p, n, (p.getPositionWorldOnA() - p.getPositionWorldOnB()).dot(n), referenceSide == 1, objectA, objectB);
 		}
 		btPlaneSpace1(n, t1, t2);
 		sides[0] = PatchSide();
@@ -354,19 +345,7 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 			btScalar height;
 			if (!triangleUnder(sides[concaveSide], onConvex, concaveSide == 1 ? n : -n, breaking, slack, normal, height)) continue;
 			if (normal.dot(concaveSide == 1 ? convexFace : -convexFace) < btShockPropagationNumerics::faceAlignment()) continue;
-			const btVector3 along = concaveSide == 1 ? normal : -normal;  // from B into A
-			p.m_normalWorldOnB = along;
-			p.m_distance1 = height;
-			if (concaveSide == 1)
-			{
-				p.m_positionWorldOnB = onConvex - along * height;
-				p.m_localPointB = objectB->getWorldTransform().invXform(p.m_positionWorldOnB);
-			}
-			else
-			{
-				p.m_positionWorldOnA = onConvex + along * height;
-				p.m_localPointA = objectA->getWorldTransform().invXform(p.m_positionWorldOnA);
-			}
+			placeAlong(p, concaveSide == 1 ? normal : -normal, height, concaveSide == 1, objectA, objectB);
 		}
 	}
 	const btManifoldPoint reference = manifold.getContactPoint(0);

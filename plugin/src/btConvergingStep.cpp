@@ -65,6 +65,23 @@ void btShockPropagationConstraintSolver::solveConverging(const btContactSolverIn
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);
 }
 
+btScalar btShockPropagationConstraintSolver::faceReach(btScalar timeStep) const
+{
+	return m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * timeStep * timeStep;
+}
+
+int btShockPropagationConstraintSolver::completeContactPatches(btScalar timeStep)
+{
+	if (!m_settings.m_completeContactPatches) return 0;
+	const btScalar reach = faceReach(timeStep);
+	// Points deeper than the correction's slop are never traded (D33, spread).
+	const btScalar slop = m_settings.m_correctionSlop >= btScalar(0) ? m_settings.m_correctionSlop
+																	  : m_settings.m_correctionSlopPerFall * largestGravity() * timeStep * timeStep;
+	int changed = 0;
+	for (int i = 0; i < m_manifolds.size(); ++i) changed += btCompleteContactPatch(*m_manifolds[i], reach, slop);
+	return changed;
+}
+
 btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
 {
 	// Bullet's setup, every row starting from zero impulse: the predictor builds the step's
@@ -79,16 +96,10 @@ btContactSolverInfo btShockPropagationConstraintSolver::setupRows(const btContac
 	if (m_settings.m_diagnostics.m_twoFrictionDirections) stepInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 	if (m_settings.m_keepBoxFaceCorners)
 	{
-		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
+		const btScalar reach = faceReach(info.m_timeStep);
 		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numBoxFaceCorners += btKeepBoxFaceCorners(*m_manifolds[i], reach);
 	}
-	if (m_settings.m_completeContactPatches)
-	{
-		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
-		const btScalar slop = m_settings.m_correctionSlop >= btScalar(0) ? m_settings.m_correctionSlop
-																		  : m_settings.m_correctionSlopPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
-		for (int i = 0; i < m_manifolds.size(); ++i) m_stats.m_numPatchPoints += btCompleteContactPatch(*m_manifolds[i], reach, slop);
-	}
+	m_stats.m_numPatchPoints += completeContactPatches(info.m_timeStep);
 	btCollisionObject** bodies = m_bodies.size() ? &m_bodies[0] : 0;
 	btPersistentManifold** manifolds = m_manifolds.size() ? &m_manifolds[0] : 0;
 	btTypedConstraint** constraints = m_constraints.size() ? &m_constraints[0] : 0;

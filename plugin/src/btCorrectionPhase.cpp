@@ -18,7 +18,6 @@ subject to the following restrictions:
 #include "BulletShockPropagation/btShockPropagationConstraintSolver.h"
 
 #include "btBodyChecks.h"
-#include "btContactPatch.h"
 #include "btPositionCorrection.h"
 #include "btShockPredictor.h"
 
@@ -132,11 +131,7 @@ bool btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 		// patches are completed as for the solve (D33), so the correction does not turn a body
 		// about a single point. (D30 is not run here: box pairs' points are the box-box test's,
 		// and adding corners here changed falling boxes, the pit's deepest point 6.4 -> 6.8 cm.)
-		const btScalar reach = m_settings.m_diagnostics.m_boxFaceReachPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
-		const btScalar slop = m_settings.m_correctionSlop >= btScalar(0) ? m_settings.m_correctionSlop
-																		  : m_settings.m_correctionSlopPerFall * largestGravity() * info.m_timeStep * info.m_timeStep;
-		if (m_settings.m_completeContactPatches)
-			for (int i = 0; i < keptManifolds; ++i) btCompleteContactPatch(*m_manifolds[i], reach, slop);
+		completeContactPatches(info.m_timeStep);
 		moved = correctPositions(info, true, m_settings.m_diagnostics.m_layeredSecondCorrection, fraction);
 	}
 	m_stats.m_timeCorrectionMs += millisecondsSince(clock);

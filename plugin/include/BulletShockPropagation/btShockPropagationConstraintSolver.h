@@ -130,6 +130,10 @@ private:
 	void markPointsSolved();
 	void assignRowsToLayers();
 	btScalar largestGravity() const;  ///< m/s^2, over the group's dynamic bodies
+	/// D30's and D33's reach (m): m_boxFaceReachPerFall |g| dt^2.
+	btScalar faceReach(btScalar timeStep) const;
+	/// D33 over the group's manifolds (m_completeContactPatches); returns the points added or traded.
+	int completeContactPatches(btScalar timeStep);
 	/// Position correction of the group's contacts; fresh: depths from the current transforms;
 	/// fraction of each depth removed (negative: m_diagnostics.m_correctionFraction). Returns
 	/// whether any point was deeper than the slop.
