@@ -35,8 +35,13 @@ std::string format(const char* pattern, double a = 0, double b = 0, double c = 0
 	return buffer;
 }
 
-/// ShapeGridTest: a column of 10 equal bodies (1 m wide, 0.5 m tall, 1 kg, mu 0.6) stands.
-Verdict columnStands(const harness::SolverSpec& spec, int shape, int ground)
+
+
+std::string cell(const Kind& shape, const Kind& ground) { return std::string(shape.name) + "_" + ground.name; }
+
+}  // namespace
+
+Verdict columnStandsVerdict(const harness::SolverSpec& spec, int shape, int ground)
 {
 	harness::Trial trial(spec, "shape_column", {{"shape", shape}, {"ground", ground}});
 	for (int k = 0; k < kColumnSteps; ++k) trial.step();
@@ -52,11 +57,6 @@ Verdict columnStands(const harness::SolverSpec& spec, int shape, int ground)
 	return v;
 }
 
-
-std::string cell(const Kind& shape, const Kind& ground) { return std::string(shape.name) + "_" + ground.name; }
-
-}  // namespace
-
 const std::vector<TruthCase>& gridCases()
 {
 	static const std::vector<TruthCase> cases = [] {
@@ -71,7 +71,7 @@ const std::vector<TruthCase>& gridCases()
 				c.statement = std::string("a column of 10 ") + kShapeWords[shape.id] + " (1 m wide, 0.5 m tall, 1 kg, mu 0.6) on " +
 							  kGroundWords[ground.id] + " is in equilibrium and stands: every body within 1 cm for 10 s";
 				const int s = shape.id, g = ground.id;
-				c.run = [s, g](const harness::SolverSpec& spec) { return columnStands(spec, s, g); };
+				c.run = [s, g](const harness::SolverSpec& spec) { return columnStandsVerdict(spec, s, g); };
 				all.push_back(c);
 			}
 		}

@@ -20,4 +20,9 @@ namespace truth
 /// the 25 that stay (each shape-major: box, hull, prism, cylinder, compound; grounds 0-4 within).
 /// Groups: "grid_column", "grid_slides", "grid_stays".
 const std::vector<TruthCase>& gridCases();
+
+/// A column of 10 equal bodies of `shape` (1 m wide, 0.5 m tall, 1 kg, mu 0.6) on `ground` stands:
+/// every body within 1 cm for 10 s (figure: the largest drift, m). The statement of the grid_column
+/// cases and of tests/truth/ShapeGridTest.cpp.
+Verdict columnStandsVerdict(const harness::SolverSpec& spec, int shape, int ground);
 }  // namespace truth
