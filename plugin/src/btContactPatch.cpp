@@ -178,6 +178,15 @@ bool triangleUnder(const PatchSide& side, const btVector3& point, const btVector
 	return true;
 }
 
+/// The point of segment [a, b] nearest to p.
+btVector3 closestOnSegment(const btVector3& p, const btVector3& a, const btVector3& b)
+{
+	const btVector3 ab = b - a;
+	const btScalar length2 = ab.length2();
+	if (!(length2 > btScalar(0))) return a;
+	return a + ab * btMax(btScalar(0), btMin(btScalar(1), (p - a).dot(ab) / length2));
+}
+
 /// Area of the convex hull of four points (u, v) of the tangent plane (m^2): the largest of the
 /// three quadrilaterals through them and the four triangles (one point inside the others').
 btScalar hullArea4(const btScalar* u, const btScalar* v)
@@ -237,6 +246,44 @@ bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
 		if (cross < -slack) return false;
 	}
 	return true;
+}
+
+/// Where a side that is no face touches (a sphere, a capsule on its side, a box's edge or corner):
+/// its rim points nearest the other part along `facing` (within `reach` of the nearest), if they lie on one
+/// segment parallel to the tangent plane. Gives the segment's ends (one point: both the same).
+bool touchingSegment(const PatchSide& side, const btVector3& facing, btScalar reach, btScalar slack, btVector3& a, btVector3& b)
+{
+	if (!side.convex || side.flatRim || side.rimCount < 1) return false;
+	btScalar nearest = BT_LARGE_FLOAT;
+	for (int k = 0; k < side.rimCount; ++k) nearest = btMin(nearest, -side.rim[k].dot(facing));
+	btVector3 touching[kRim];
+	int count = 0;
+	for (int k = 0; k < side.rimCount; ++k)
+		if (-side.rim[k].dot(facing) <= nearest + reach) touching[count++] = side.rim[k];
+	if (count == 0) return false;
+	a = b = touching[0];
+	btScalar longest = 0;
+	for (int i = 0; i < count; ++i)
+		for (int j = i + 1; j < count; ++j)
+		{
+			const btScalar length2 = (touching[i] - touching[j]).length2();
+			if (length2 > longest)
+			{
+				longest = length2;
+				a = touching[i];
+				b = touching[j];
+			}
+		}
+	for (int k = 0; k < count; ++k)
+		if ((touching[k] - closestOnSegment(touching[k], a, b)).length2() > slack * slack) return false;
+	return true;
+}
+
+/// Moves a point's position on one body (A's if `onA`) to `position`, its local point with it.
+void moveOnBody(btManifoldPoint& p, bool onA, const btVector3& position, const btCollisionObject* object)
+{
+	(onA ? p.m_positionWorldOnA : p.m_positionWorldOnB) = position;
+	(onA ? p.m_localPointA : p.m_localPointB) = object->getWorldTransform().invXform(position);
 }
 }  // namespace
 
@@ -315,7 +362,7 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 	else if (!faceA.isZero() || !faceB.isZero())
 		referenceSide = faceA.isZero() ? 1 : 0;
 	const btVector3 face = referenceSide == 0 ? faceA : (referenceSide == 1 ? faceB : btVector3(0, 0, 0));
-	if (referenceSide >= 0 && face.dot(n) >= btShockPropagationNumerics::faceAlignment() && face.dot(n) < btScalar(1))
+	if (referenceSide >= 0 && face.dot(n) >= btShockPropagationNumerics::faceAlignment() && !(face == n))
 	{
 		n = face;
 		for (int j = 0; j < initial; ++j)
@@ -348,21 +395,64 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 			placeAlong(p, concaveSide == 1 ? normal : -normal, height, concaveSide == 1, objectA, objectB);
 		}
 	}
+	// A part that is no face (a sphere, a capsule on its side, a box's edge or corner) touches a
+	// face where its surface is nearest it: on its touching segment (a point for a sphere or a
+	// corner). A point Bullet keeps from an earlier step is fixed in the part, and once a round
+	// part rolls it lies beside that segment, where the normal force turns the part on (a capsule
+	// on a box rolled like an inverted pendulum on its old point: the roll grew 2.2 times every
+	// 20 steps). Each point goes back onto the segment, keeping its place along it, and takes its
+	// distance to the face there; the segment's ends are the patch's rim (candidates below).
+	btVector3 segment[2][2];
+	bool touching[2] = {false, false};
+	for (int s = 0; s < 2; ++s)
+	{
+		const PatchSide& other = sides[1 - s];
+		touching[s] = (other.flat || other.concave || !faceNormal(other, n).isZero()) &&
+					  touchingSegment(sides[s], s == 0 ? -n : n, breaking, slack, segment[s][0], segment[s][1]);
+		for (int j = 0; j < initial && touching[s]; ++j)
+		{
+			btManifoldPoint& p = manifold.getContactPoint(j);
+			const btVector3 onPart = s == 0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB();
+			const btVector3 onSegment = closestOnSegment(onPart, segment[s][0], segment[s][1]);
+			if (!((onSegment - onPart).length2() > btScalar(0))) continue;
+			btVector3 normal = n;
+			btScalar distance;
+			if (other.concave)
+			{
+				if (!triangleUnder(other, onSegment, s == 0 ? n : -n, breaking, slack, normal, distance)) continue;
+				if (s == 1) normal = -normal;
+			}
+			else
+			{
+				// Over the other part's face (inside its rim; a plane is under every point).
+				if (!over(other, onSegment.dot(t1), onSegment.dot(t2), slack)) continue;
+				distance = s == 0 ? (onSegment - p.getPositionWorldOnB()).dot(n) : (p.getPositionWorldOnA() - onSegment).dot(n);
+			}
+			if (!(distance >= -breaking && distance <= breaking)) continue;
+			moveOnBody(p, s == 0, onSegment, s == 0 ? objectA : objectB);
+			placeAlong(p, normal, distance, s == 0, objectA, objectB);
+		}
+	}
 	const btManifoldPoint reference = manifold.getContactPoint(0);
 
 	// Candidates: rim points of either side within reach of the other's plane and over its face.
-	btVector3 candidateA[2 * kRim], candidateNormal[2 * kRim];
-	btScalar candidateDistance[2 * kRim];
+	// Each side's rim (or segment ends), then the crossings of the two rims' edges.
+	const int kMaxCandidates = 2 * kRim + kRim * kRim;
+	btVector3 candidateA[kMaxCandidates], candidateNormal[kMaxCandidates];
+	btScalar candidateDistance[kMaxCandidates];
 	int numCandidates = 0;
 	for (int s = 0; s < 2; ++s)
 	{
 		const PatchSide& side = sides[s];
 		const PatchSide& other = sides[1 - s];
 		const btVector3 otherPoint = s == 0 ? reference.getPositionWorldOnB() : reference.getPositionWorldOnA();
-		// Only a face's rim: a capsule's line or a sphere's point is Bullet's contact as it is
-		// (adding a capsule's ends put three more hostile worlds over their speed caps).
-		for (int k = 0; k < side.rimCount && side.flatRim; ++k)
+		// A face's rim, or a touching segment's two ends (a capsule on its side; a sphere's or a
+		// corner's one point is the contact Bullet has).
+		const bool line = touching[s] && (segment[s][1] - segment[s][0]).length2() > slack * slack;
+		const int count = side.flatRim ? side.rimCount : (line ? 2 : 0);
+		for (int k = 0; k < count; ++k)
 		{
+			const btVector3 rim = side.flatRim ? side.rim[k] : segment[s][k];
 			// Distance between the faces at this point, positive apart (A above B along n).
 			btScalar distance;
 			btVector3 normal = n;
@@ -370,20 +460,51 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 			{
 				// The triangle under the rim point is the face it rests on (none: it is not over one).
 				btScalar height;
-				if (!triangleUnder(other, side.rim[k], s == 0 ? n : -n, breaking, slack, normal, height)) continue;
+				if (!triangleUnder(other, rim, s == 0 ? n : -n, breaking, slack, normal, height)) continue;
 				if (s == 1) normal = -normal;
 				distance = height;
 			}
 			else
 			{
-				distance = s == 0 ? (side.rim[k] - otherPoint).dot(n) : (otherPoint - side.rim[k]).dot(n);
-				if (!over(other, side.rimU[k], side.rimV[k], slack)) continue;
+				distance = s == 0 ? (rim - otherPoint).dot(n) : (otherPoint - rim).dot(n);
+				if (!over(other, rim.dot(t1), rim.dot(t2), slack)) continue;
 			}
 			if (!(distance <= reach && distance >= -breaking)) continue;
-			candidateA[numCandidates] = s == 0 ? side.rim[k] : side.rim[k] + normal * distance;
+			candidateA[numCandidates] = s == 0 ? rim : rim + normal * distance;
 			candidateNormal[numCandidates] = normal;
 			candidateDistance[numCandidates] = distance;
 			++numCandidates;
+		}
+	}
+	// Two faces crossing (planks of a crib, hulls whose faces overlap in part): the patch's corners
+	// are also where an edge of one rim crosses an edge of the other (their polygons' intersection,
+	// as face clipping finds it). Each crossing is a candidate on A's face, at the faces' distance.
+	if (sides[0].flatRim && sides[1].flatRim)
+	{
+		const btScalar heightA = sides[0].rim[0].dot(n), heightB = sides[1].rim[0].dot(n);
+		const btScalar distance = heightA - heightB;
+		for (int i = 0; i < sides[0].rimCount && distance <= reach && distance >= -breaking; ++i)
+		{
+			const int i1 = (i + 1) % sides[0].rimCount;
+			const btScalar au = sides[0].rimU[i], av = sides[0].rimV[i];
+			const btScalar eu = sides[0].rimU[i1] - au, ev = sides[0].rimV[i1] - av;
+			for (int j = 0; j < sides[1].rimCount && numCandidates < kMaxCandidates; ++j)
+			{
+				const int j1 = (j + 1) % sides[1].rimCount;
+				const btScalar bu = sides[1].rimU[j], bv = sides[1].rimV[j];
+				const btScalar fu = sides[1].rimU[j1] - bu, fv = sides[1].rimV[j1] - bv;
+				// a + s e = b + t f, s and t in [0, 1].
+				const btScalar det = eu * fv - ev * fu;
+				if (!(btFabs(det) > SIMD_EPSILON * (eu * eu + ev * ev + fu * fu + fv * fv))) continue;  // parallel edges
+				const btScalar along = ((bu - au) * fv - (bv - av) * fu) / det;
+				const btScalar across = ((bu - au) * ev - (bv - av) * eu) / det;
+				if (!(along >= 0 && along <= 1 && across >= 0 && across <= 1)) continue;
+				const btScalar u = au + along * eu, v = av + along * ev;
+				candidateA[numCandidates] = t1 * u + t2 * v + n * heightA;
+				candidateNormal[numCandidates] = n;
+				candidateDistance[numCandidates] = distance;
+				++numCandidates;
+			}
 		}
 	}
 	// A new point at candidate c: the pair's combined coefficients, flags and frames from the

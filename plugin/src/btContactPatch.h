@@ -47,13 +47,20 @@ btManifoldPoint btAddedContactPoint(const btManifoldPoint& reference, const btCo
 /// corners, points of a cylinder's circle; a capsule's rim is its line's two ends, a sphere's one
 /// point. For a manifold whose points are all within the breaking threshold (a resting patch):
 /// 1. a static part's face (or a btStaticPlaneShape) within about 8 degrees of n gives every point
-///    its normal; on a static mesh or heightfield each point takes the normal of the triangle under
-///    it (processAllTriangles) where the convex face lies along it;
-/// 2. rim points of either part's face (not a capsule's line) within `reach` outside or the breaking threshold inside the other
-///    part's face and over it (inside its rim polygon; on a plane everywhere; on a mesh or
-///    heightfield over a triangle that faces it) are candidates; while the manifold holds fewer
-///    than four points the candidate farthest from them is added;
-/// 3. a full manifold trades a point for a candidate while that enlarges the points' hull by 1%,
+///    its normal (else the larger face; compared as vectors: in float a dot product rounds to 1 below
+///    2.4e-4 rad, and a capsule on a box rolled off under a 5.7e-5 rad tilt); on a static mesh or
+///    heightfield each point takes the normal of the triangle under it (processAllTriangles) where
+///    the convex face lies along it;
+/// 2. a part that is no face touches on its touching segment, the rim points within the breaking
+///    threshold of its nearest (a capsule on its side: its line's ends; a sphere or a corner: one
+///    point): every point on it goes back onto that segment (a point Bullet keeps is fixed in the
+///    part and lags beside the line once it rolls), at its distance to the face there;
+/// 3. candidates: rim points of either part's face, a touching segment's ends, and where an edge of
+///    one face's rim crosses an edge of the other's (two planks crossing), within `reach` outside
+///    or the breaking threshold inside the other part's face and over it (inside its rim polygon;
+///    on a plane everywhere; on a mesh or heightfield over a triangle that faces it); while the
+///    manifold holds fewer than four points the candidate farthest from them is added;
+/// 4. a full manifold trades a point for a candidate while that enlarges the points' hull by 1%,
 ///    never its deepest point nor one deeper than `keepDepth` (m; the correction's slop), through
 ///    removeContactPoint and addManifoldPoint (the app's callbacks run).
 /// Every new point copies the manifold's first point (coefficients, flags) and

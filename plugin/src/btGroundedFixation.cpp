@@ -118,9 +118,11 @@ void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodi
 		for (int i = 0; i < m_loose.size(); ++i)
 			if (findCluster(m_loose[i]) == m_loose[i] && clusterSpans(m_loose[i]))
 				for (int b = m_clusterNodes[m_loose[i]].m_firstMember; b >= 0; b = m_clusterNodes[b].m_nextMember) m_grounded[b] = 1;
-		// Not grounded: the rows to the bodies under it are free on both sides.
+		// Not grounded: the rows to the bodies under it are free on both sides, unless they carry
+		// its own load (a ball resting on one point keeps them one-sided; still nothing is fixated
+		// on it).
 		for (int i = 0; i < m_loose.size(); ++i)
-			if (m_grounded[m_loose[i]] == 2)
+			if (m_grounded[m_loose[i]] == 2 && !carriesOwnLoad(m_loose[i], bodies[m_loose[i]]))
 				for (int j = m_supportStart[m_loose[i]]; j < m_supportStart[m_loose[i] + 1]; ++j) freeBothSides(m_rows[m_supportRows[j]]);
 	}
 }
@@ -249,4 +251,46 @@ bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBod
 		if (btFabs(v) > speed) return false;
 	}
 	return true;
+}
+
+bool btShockPredictor::carriesOwnLoad(int body, const btSolverBody& solverBody) const
+{
+	// The load w = (F, tau) moves the body by W w; in the W inner product <g, h> = g^T W h the
+	// support rows' Jacobians (its side, Gram-Schmidt: h_k with <h_j, h_k> = delta_jk) span what
+	// they can carry, and w^T W w - sum_k <h_k, w>^2 is the kinetic energy (over dt^2 / 2) of the
+	// motion left to the load: along the rows' null space (a ball rolling about its point).
+	const btRigidBody* rb = solverBody.m_originalBody;
+	if (!rb || !(rb->getInvMass() > btScalar(0))) return false;
+	const btScalar invMass = rb->getInvMass();
+	const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
+	const btVector3 force = rb->getTotalForce(), torque = rb->getTotalTorque();
+	const btScalar total = invMass * force.length2() + torque.dot(invInertia * torque);
+	if (!(total > btScalar(0))) return false;
+	btVector3 basisLinear[6], basisAngular[6];
+	int rank = 0;
+	btScalar carried = 0;
+	for (int k = m_supportStart[body]; k < m_supportStart[body + 1] && rank < 6; ++k)
+	{
+		const Row& r = m_rows[m_supportRows[k]];
+		if (!r.m_fixed) continue;
+		btVector3 n, cr;
+		freeSide(r, n, cr);
+		const btScalar norm = invMass * n.length2() + cr.dot(invInertia * cr);
+		if (!(norm > btScalar(0))) continue;
+		for (int j = 0; j < rank; ++j)
+		{
+			const btScalar p = invMass * n.dot(basisLinear[j]) + cr.dot(invInertia * basisAngular[j]);
+			n -= basisLinear[j] * p;
+			cr -= basisAngular[j] * p;
+		}
+		const btScalar left = invMass * n.length2() + cr.dot(invInertia * cr);
+		if (!(left > spanMinPivot() * norm)) continue;
+		const btScalar scale = btScalar(1) / btSqrt(left);
+		basisLinear[rank] = n * scale;
+		basisAngular[rank] = cr * scale;
+		const btScalar along = invMass * force.dot(basisLinear[rank]) + torque.dot(invInertia * basisAngular[rank]);
+		carried += along * along;
+		++rank;
+	}
+	return rank > 0 && total - carried <= spanMinPivot() * total;
 }

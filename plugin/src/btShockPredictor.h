@@ -336,6 +336,10 @@ private:
 	};
 	int findCluster(int body);
 	bool clusterSpans(int root);
+	/// A body not grounded whose fixated support rows can still carry its own load (the force and
+	/// torque on it: gravity and the app's): the part of that load outside their span is at most
+	/// spanMinPivot() of it, in kinetic energy (a ball on one point, a capsule on its line).
+	bool carriesOwnLoad(int body, const btSolverBody& solverBody) const;
 	btAlignedObjectArray<int> m_loose;  // groundRows: the layer's free bodies not grounded alone
 	btAlignedObjectArray<ClusterNode> m_clusterNodes;
 	btAlignedObjectArray<int> m_clusterRowNext;  // per row

@@ -48,6 +48,9 @@ const std::vector<SceneEntry>& registry()
 		{"truth", "shape_column", "Column of 10 equal bodies of one shape (box, hull, prism, cylinder, compound) on a box, plane, mesh or heightfield ground: stands.", createShapeColumn, shapeColumnParams()},
 		{"truth", "round_on_block", "A heavy sphere or lying capsule at rest on a light box on the ground (any ground kind): both stay at rest.", createRoundOnBlock, roundOnBlockParams()},
 		{"truth", "leaning_plank", "A plank leaning at 60 degrees against a static wall on any ground kind: stands iff mu is above the critical mu statics gives for its geometry.", createLeaningPlank, leaningPlankParams()},
+		{"truth", "table_stack", "A table made as one compound body (top and four legs) carrying a column of 5 boxes, on any ground kind: it stands.", createTableStack, tableStackParams()},
+		{"truth", "plank_crib", "A crib of interlocking planks, 10 layers of two, each layer turned 90 degrees, on any ground kind: it stands.", createPlankCrib, plankCribParams()},
+		{"truth", "hull_bin", "30 random convex hulls dropped into a walled bin on any ground kind: they settle into a pile that comes to rest.", createHullBin, hullBinParams()},
 		{"truth", "loaded_lintel", "Lintel on two capped columns with a heavy box off centre: the caps share the load by the lever rule.", createLoadedLintel, loadedLintelParams()},
 
 		// benchmark: layouts after Bullet's BenchmarkDemo and PyBullet's tests, with the outcome physics predicts

@@ -94,6 +94,14 @@ Params roundOnBlockParams();
 std::unique_ptr<SceneContent> createLeaningPlank(btDiscreteDynamicsWorld& world, const Params& params);
 Params leaningPlankParams();
 
+// StructureScenes.cpp
+std::unique_ptr<SceneContent> createTableStack(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createPlankCrib(btDiscreteDynamicsWorld& world, const Params& params);
+std::unique_ptr<SceneContent> createHullBin(btDiscreteDynamicsWorld& world, const Params& params);
+Params tableStackParams();
+Params plankCribParams();
+Params hullBinParams();
+
 // ExampleScenes.cpp
 std::unique_ptr<SceneContent> createBasicDemoBlock(btDiscreteDynamicsWorld& world, const Params& params);
 Params basicDemoBlockParams();

@@ -5,7 +5,7 @@
 //
 // --grid runs the shape grid's cases (truth::gridCases(), include/truth/GridCases.h) instead: the
 // CSV defaults to demos/charts/results/truth_grid.csv (the truth_vs_cost_grid chart) and the markdown
-// adds a passed row per group (grid_column, grid_slides, grid_stays).
+// adds a passed row per group (grid_column, grid_round, grid_structure, grid_slides, grid_stays).
 //
 // MLCP runs each case in a child process under a time limit (--timeout, 20 s): a case it cannot
 // finish in time is marked "skipped". It runs after the other configurations of the same case, so
@@ -37,7 +37,7 @@ namespace
 {
 const char* kUsage =
 	"usage: bsp_truth [--grid] [--configs LIST] [--cases LIST] [--csv FILE] [--md FILE] [--timeout S] [--list]\n"
-	"  --grid     the shape grid's 75 cases (columns stand, pushed stacks slide / stay, per shape and ground)\n"
+	"  --grid     the shape grid's 100 cases (columns, round bodies on a block, tables and plank cribs stand, pushed stacks slide / stay, per shape and ground)\n"
 	"             instead of the truth suite's; --cases and --list then name grid cases\n"
 	"  --configs  comma-separated solver:iterations, e.g. si:10,si-sub4:10,sp:5,mlcp (iterations default 10);\n"
 	"             default: si at 1,2,5,10,20,50,100,200; si2f:10; si-sub2/4/8 at 10; nncg at 10, 50; mlcp;\n"

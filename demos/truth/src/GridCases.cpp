@@ -25,6 +25,9 @@ struct Kind
 // The names of the ctest grid's cells (ShapeGridTest's and PushedGridTest's cellName).
 const Kind kShapes[] = {{0, "box"}, {1, "hull"}, {3, "prism"}, {4, "cylinder"}, {5, "compound"}};
 const Kind kGrounds[] = {{0, "onBox"}, {1, "onPlane"}, {2, "onMesh"}, {3, "onMeshEdges"}, {4, "onHeightfield"}};
+const Kind kPlankShapes[] = {{0, "box"}, {1, "hull"}};
+const Kind kRoundShapes[] = {{6, "capsule"}, {7, "sphere"}};
+const char* kRoundWords[] = {"capsule lying on its side", "sphere"};
 const char* kShapeWords[] = {"boxes", "hulls", "hulls with features", "hexagonal prisms", "cylinders", "compounds"};
 const char* kGroundWords[] = {"a box", "a plane", "a triangle mesh", "a triangle mesh with internal-edge adjustment", "a heightfield"};
 
@@ -35,15 +38,14 @@ std::string format(const char* pattern, double a = 0, double b = 0, double c = 0
 	return buffer;
 }
 
-
-
 std::string cell(const Kind& shape, const Kind& ground) { return std::string(shape.name) + "_" + ground.name; }
 
 }  // namespace
 
-Verdict columnStandsVerdict(const harness::SolverSpec& spec, int shape, int ground)
+Verdict standsVerdict(const harness::SolverSpec& spec, const std::string& scene, const std::vector<std::pair<std::string, double>>& params,
+					  const std::string& what)
 {
-	harness::Trial trial(spec, "shape_column", {{"shape", shape}, {"ground", ground}});
+	harness::Trial trial(spec, scene, params);
 	for (int k = 0; k < kColumnSteps; ++k) trial.step();
 	const harness::TrialSummary s = trial.summary();
 	Verdict v;
@@ -51,10 +53,30 @@ Verdict columnStandsVerdict(const harness::SolverSpec& spec, int shape, int grou
 	v.figure = s.maxDrift;
 	v.expected = 0;
 	v.pass = !s.nonFinite && s.maxDrift < kTogether;
-	v.detail = format("column of 10 in equilibrium: must stand; largest drift %.4f m in 10 s (limit 0.01)", s.maxDrift);
+	v.detail = what + format(", in equilibrium: must stand; largest drift %.4f m in 10 s (limit 0.01)", s.maxDrift);
 	if (s.nonFinite) v.detail += "; non-finite state";
 	v.msPerStep = s.msPerStep;
 	return v;
+}
+
+Verdict columnStandsVerdict(const harness::SolverSpec& spec, int shape, int ground)
+{
+	return standsVerdict(spec, "shape_column", {{"shape", shape}, {"ground", ground}}, "column of 10");
+}
+
+Verdict roundOnBlockVerdict(const harness::SolverSpec& spec, int shape, int ground)
+{
+	return standsVerdict(spec, "round_on_block", {{"shape", shape}, {"ground", ground}}, "100 kg round body on a 1 kg box");
+}
+
+Verdict tableStackVerdict(const harness::SolverSpec& spec, int ground)
+{
+	return standsVerdict(spec, "table_stack", {{"ground", ground}}, "compound table carrying 5 boxes");
+}
+
+Verdict plankCribVerdict(const harness::SolverSpec& spec, int shape, int ground)
+{
+	return standsVerdict(spec, "plank_crib", {{"shape", shape}, {"ground", ground}}, "crib of 10 layers of two planks");
 }
 
 const std::vector<TruthCase>& gridCases()
@@ -72,6 +94,46 @@ const std::vector<TruthCase>& gridCases()
 							  kGroundWords[ground.id] + " is in equilibrium and stands: every body within 1 cm for 10 s";
 				const int s = shape.id, g = ground.id;
 				c.run = [s, g](const harness::SolverSpec& spec) { return columnStandsVerdict(spec, s, g); };
+				all.push_back(c);
+			}
+		}
+		for (const Kind& round : kRoundShapes)
+		{
+			for (const Kind& ground : kGrounds)
+			{
+				TruthCase c;
+				c.name = "RoundOnBlock_" + cell(round, ground) + "_Stands";
+				c.group = "grid_round";
+				c.statement = std::string("a 100 kg ") + kRoundWords[round.id - 6] + " (radius 0.25 m, mu 0.6) resting on the middle of a 1 kg box on " +
+							  kGroundWords[ground.id] + " is in equilibrium and stands: both bodies within 1 cm for 10 s";
+				const int s = round.id, g = ground.id;
+				c.run = [s, g](const harness::SolverSpec& spec) { return roundOnBlockVerdict(spec, s, g); };
+				all.push_back(c);
+			}
+		}
+		for (const Kind& ground : kGrounds)
+		{
+			TruthCase c;
+			c.name = std::string("TableStack_") + ground.name + "_Stands";
+			c.group = "grid_structure";
+			c.statement = std::string("a 10 kg table made as one compound body (top and four legs) carrying a column of 5 boxes (1 kg) on ") +
+						  kGroundWords[ground.id] + " is in equilibrium and stands: every body within 1 cm for 10 s";
+			const int g = ground.id;
+			c.run = [g](const harness::SolverSpec& spec) { return tableStackVerdict(spec, g); };
+			all.push_back(c);
+		}
+		for (const Kind& plank : kPlankShapes)
+		{
+			for (const Kind& ground : kGrounds)
+			{
+				TruthCase c;
+				c.name = "PlankCrib_" + cell(plank, ground) + "_Stands";
+				c.group = "grid_structure";
+				c.statement = std::string("a crib of 10 layers of two interlocking planks (") + kShapeWords[plank.id] +
+							  ", 3 x 0.3 x 0.3 m, 5 kg, each layer turned 90 degrees) on " + kGroundWords[ground.id] +
+							  " is in equilibrium and stands: every plank within 1 cm for 10 s";
+				const int s = plank.id, g = ground.id;
+				c.run = [s, g](const harness::SolverSpec& spec) { return plankCribVerdict(spec, s, g); };
 				all.push_back(c);
 			}
 		}

@@ -1,6 +1,7 @@
 // The shape grid of the truth suite (issue 37) as truth cases, for bsp_truth --grid: one case per
 // (statement, shape, ground) cell, with exactly the statements of tests/truth/ShapeGridTest.cpp (a
-// column of 10 equal bodies stands: every body within 1 cm for 10 s) and tests/truth/PushedGridTest.cpp
+// column of 10 equal bodies stands: every body within 1 cm for 10 s; a 100 kg sphere or capsule on a
+// 1 kg box stands; a compound table carrying a stack and a crib of planks stand) and tests/truth/PushedGridTest.cpp
 // (5 stacked bodies pushed at the bottom with 1.4 mu W slide as one at Coulomb's (F - mu W) / M within
 // 10%, no body more than 1 cm from where the bottom one carries it; pushed with 0.6 mu W no body drifts
 // 1 cm). Shapes {0 box, 1 hull, 3 hexagonal prism, 4 cylinder, 5 compound} x grounds {0 box, 1 plane,
@@ -16,13 +17,28 @@
 
 namespace truth
 {
-/// The 75 grid cases in a fixed order: the 25 columns, then the 25 pushed stacks that slide, then
-/// the 25 that stay (each shape-major: box, hull, prism, cylinder, compound; grounds 0-4 within).
-/// Groups: "grid_column", "grid_slides", "grid_stays".
+/// The 100 grid cases in a fixed order: the 25 columns, the 10 heavy round bodies on a light box
+/// (capsule, sphere; grounds 0-4 within), the 5 tables carrying a stack and the 10 plank cribs
+/// (box, hull planks), then the 25 pushed stacks that slide, then the 25 that stay (each
+/// shape-major: box, hull, prism, cylinder, compound; grounds 0-4 within).
+/// Groups: "grid_column", "grid_round", "grid_structure", "grid_slides", "grid_stays".
 const std::vector<TruthCase>& gridCases();
 
 /// A column of 10 equal bodies of `shape` (1 m wide, 0.5 m tall, 1 kg, mu 0.6) on `ground` stands:
 /// every body within 1 cm for 10 s (figure: the largest drift, m). The statement of the grid_column
 /// cases and of tests/truth/ShapeGridTest.cpp.
 Verdict columnStandsVerdict(const harness::SolverSpec& spec, int shape, int ground);
+
+/// A 100 kg round body (`shape` 6 a capsule on its side, 7 a sphere; radius 0.25 m) on the middle of
+/// a 1 kg box on `ground` stands: both bodies within 1 cm for 10 s (figure: the largest drift, m).
+/// The statement of the grid_round cases and of tests/truth/ShapeGridTest.cpp.
+Verdict roundOnBlockVerdict(const harness::SolverSpec& spec, int shape, int ground);
+
+/// A 10 kg compound table (top and four legs) carrying 5 boxes on `ground` stands: every body within
+/// 1 cm for 10 s (figure: the largest drift, m).
+Verdict tableStackVerdict(const harness::SolverSpec& spec, int ground);
+
+/// A crib of 10 layers of two interlocking planks (`shape` 0 box, 1 hull) on `ground` stands: every
+/// plank within 1 cm for 10 s (figure: the largest drift, m).
+Verdict plankCribVerdict(const harness::SolverSpec& spec, int shape, int ground);
 }  // namespace truth
