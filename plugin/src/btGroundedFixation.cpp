@@ -73,7 +73,15 @@ void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodi
 			for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j)
 			{
 				Row& r = m_rows[m_supportRows[j]];
-				if (r.m_fixed && m_grounded[fixedSide(r)] != 1) freeBothSides(r);
+				if (r.m_fixed && (m_grounded[fixedSide(r)] != 1 || (r.m_kind == CONTACT && !pushCarried(r, bodies)))) freeBothSides(r);
+			}
+			// A friction or rolling row follows its contact: one-sided only while the contact is.
+			for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j)
+			{
+				Row& r = m_rows[m_supportRows[j]];
+				if (!r.m_fixed || !r.m_normal) continue;
+				for (int q = m_supportStart[b]; q < m_supportStart[b + 1]; ++q)
+					if (m_rows[m_supportRows[q]].m_row == r.m_normal && !m_rows[m_supportRows[q]].m_fixed) freeBothSides(r);
 			}
 			btCholesky6 span;
 			m_grounded[b] = supportFactor(b, span) ? 1 : 2;  // 2: decided, not grounded (alone, so far)
@@ -293,4 +301,34 @@ bool btShockPredictor::carriesOwnLoad(int body, const btSolverBody& solverBody) 
 		++rank;
 	}
 	return rank > 0 && total - carried <= spanMinPivot() * total;
+}
+
+bool btShockPredictor::pushCarried(const Row& r, const btAlignedObjectArray<btSolverBody>& bodies) const
+{
+	// The contact pushes the fixated body F along p (its side's normal). F's supports pass that on
+	// if p lies within the friction cone of one of them: -p . n_s = cos a > 0 and sin a <= mu_s cos a,
+	// n_s the support's normal on F's side. A support without friction passes on the normal part and
+	// leaves the rest to F's mobility (btFixatedMobility.cpp). Outside every cone, F would slide or
+	// lift under the push, and fixating it hands it a load it cannot pass on: a 1.5 g box crushed
+	// by a 188 t one through a contact 31 degrees off its supports kept s = 890 times the unbalanced
+	// sideways share and was flung at 446 m/s (hostile worlds, seed 258). Bodies grounded only as a
+	// cluster's members are held by their mates, not by their supports.
+	const int F = fixedSide(r);
+	const btRigidBody* rb = bodies[F].m_originalBody;
+	if (!rb || !(rb->getInvMass() > btScalar(0))) return true;
+	btCholesky6 span;
+	if (!supportFactor(F, span)) return true;
+	const btVector3 push = r.m_fixed == 1 ? r.m_row->m_contactNormal1 : r.m_row->m_contactNormal2;
+	for (int k = m_supportStart[F]; k < m_supportStart[F + 1]; ++k)
+	{
+		const Row& s = m_rows[m_supportRows[k]];
+		if (!s.m_fixed || s.m_kind != CONTACT) continue;
+		btVector3 n, cr;
+		freeSide(s, n, cr);
+		const btScalar c = -push.dot(n);
+		if (!(c > btScalar(0))) continue;
+		const btScalar mu = s.m_row->m_friction;
+		if (!(mu > btScalar(0)) || btSqrt(btMax(btScalar(0), btScalar(1) - c * c)) <= mu * c) return true;
+	}
+	return false;
 }

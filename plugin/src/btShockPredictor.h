@@ -340,6 +340,9 @@ private:
 	/// torque on it: gravity and the app's): the part of that load outside their span is at most
 	/// spanMinPivot() of it, in kinetic energy (a ball on one point, a capsule on its line).
 	bool carriesOwnLoad(int body, const btSolverBody& solverBody) const;
+	/// Whether the supports of a one-sided contact row's fixated body pass its push on: the push
+	/// lies within one support's friction cone (or that support has no friction: mobility's part).
+	bool pushCarried(const Row& r, const btAlignedObjectArray<btSolverBody>& bodies) const;
 	btAlignedObjectArray<int> m_loose;  // groundRows: the layer's free bodies not grounded alone
 	btAlignedObjectArray<ClusterNode> m_clusterNodes;
 	btAlignedObjectArray<int> m_clusterRowNext;  // per row
