@@ -7,7 +7,7 @@
 # The speed-against-accuracy sweep runs as two processes over two halves of the scene list (the
 # machine has two cores); inside each scene every configuration is stepped in lockstep, so load
 # from anything else hits all of them alike. The towers and scaling studies run after it, alone.
-# The shape grid (bsp_truth --grid: 100 cases, about 2-3 minutes) gives truth_vs_cost_grid.
+# The shape grid (bsp_truth --grid: 105 cases, about 2-3 minutes) gives truth_vs_cost_grid.
 #   demos/charts.sh grid   only the shape grid: its run, truth_vs_cost_grid and its results (build/truth-grid/)
 # BSP_CHARTS_BUILD names another build directory (default build/float).
 set -euo pipefail

@@ -30,14 +30,18 @@ std::uint32_t seedParam(const Params& params)
 // ---------------------------------------------------------------------------------------------------
 // table_stack: a table made as one btCompoundShape body (a top slab and four legs, uniform density,
 // its frame at its centre of mass so Bullet's body frame is the true one) standing on the ground,
-// carrying a column of n standard boxes (1 x 0.5 x 1 m, 1 kg) on the middle of its top: in
-// equilibrium, so everything stays at rest. The table's inertia is the parts' (parallel axes), not
+// carrying a column of n standard boxes (1 x 0.5 x 1 m, 1 kg) `offset` from the middle of its top
+// (1.6 m square). Within 0.8 m the column's centre of mass is over the top: in equilibrium, so
+// everything stays at rest (the fact "expectStanding"); beyond, the column tips over the top's edge
+// and falls off (the table itself stays: with 5 boxes at offset 1 m their common centre of mass is
+// 0.33 m from the middle, inside the legs). The table's inertia is the parts' (parallel axes), not
 // Bullet's bounding-box estimate for a compound.
 
 Params tableStackParams()
 {
 	return {
 		{"n", 5, "-", "boxes stacked on the table"},
+		{"offset", 0, "m", "the column's offset along x from the middle of the table top (0.8 m: the top's edge)"},
 		{"tableMass", 10, "kg", "mass of the table"},
 		{"ground", 0, "-", "ground (0 box, 1 plane, 2 triangle mesh, 3 mesh+internal edges, 4 heightfield)"},
 		{"mu", 0.6, "-", build::kMuDescription},
@@ -47,6 +51,7 @@ Params tableStackParams()
 std::unique_ptr<SceneContent> createTableStack(btDiscreteDynamicsWorld& world, const Params& params)
 {
 	const int n = build::countParam(params, "n", 0);
+	const btScalar offset = btScalar(getParam(params, "offset"));
 	const btScalar tableMass = build::positiveParam(params, "tableMass");
 	const btScalar mu = build::nonNegativeParam(params, "mu");
 	const btVector3 topHalf(btScalar(0.8), btScalar(0.05), btScalar(0.8));
@@ -90,9 +95,10 @@ std::unique_ptr<SceneContent> createTableStack(btDiscreteDynamicsWorld& world, c
 	btCollisionShape* box = content->addShape(new btBoxShape(boxHalf));
 	const btScalar base = height - 2 * btScalar(build::kRestOverlap);
 	btRigidBody* body = table;
-	for (int level = 0; level < n; ++level) body = content->addBody(box, 1, build::at(0, build::columnCentreY(base, boxHalf.y(), level), 0), mu);
+	for (int level = 0; level < n; ++level) body = content->addBody(box, 1, build::at(offset, build::columnCentreY(base, boxHalf.y(), level), 0), mu);
 	content->name("top", body);
-	build::finishScene(*content, true);
+	content->facts["tableTop"] = height;
+	build::finishScene(*content, btFabs(offset) < topHalf.x());
 	return content;
 }
 

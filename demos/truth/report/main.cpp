@@ -37,7 +37,7 @@ namespace
 {
 const char* kUsage =
 	"usage: bsp_truth [--grid] [--configs LIST] [--cases LIST] [--csv FILE] [--md FILE] [--timeout S] [--list]\n"
-	"  --grid     the shape grid's 100 cases (columns, round bodies on a block, tables and plank cribs stand, pushed stacks slide / stay, per shape and ground)\n"
+	"  --grid     the shape grid's 105 cases (columns, round bodies on a block, tables and plank cribs stand, a stack off a table's edge falls, pushed stacks slide / stay, per shape and ground)\n"
 	"             instead of the truth suite's; --cases and --list then name grid cases\n"
 	"  --configs  comma-separated solver:iterations, e.g. si:10,si-sub4:10,sp:5,mlcp (iterations default 10);\n"
 	"             default: si at 1,2,5,10,20,50,100,200; si2f:10; si-sub2/4/8 at 10; nncg at 10, 50; mlcp;\n"

@@ -16,6 +16,8 @@ namespace
 constexpr double kTogether = 0.01;      // m: "within 1 cm", "apart < 1 cm", "at rest"
 constexpr int kColumnSteps = 600;       // 10 s at 60 Hz (harness::Trial's default time step)
 constexpr double kSlides = 1.4, kStays = 0.6;  // the push in units of mu W
+constexpr double kOffTheEdge = 1.0;     // m, a column's offset from the middle of a table top 0.8 m wide each way
+constexpr int kFallSteps = 180;         // 3 s
 
 struct Kind
 {
@@ -74,6 +76,26 @@ Verdict tableStackVerdict(const harness::SolverSpec& spec, int ground)
 	return standsVerdict(spec, "table_stack", {{"ground", ground}}, "compound table carrying 5 boxes");
 }
 
+Verdict tableStackFallsVerdict(const harness::SolverSpec& spec, int ground)
+{
+	harness::Trial trial(spec, "table_stack", {{"ground", ground}, {"offset", kOffTheEdge}});
+	const btRigidBody* top = trial.named("top");
+	const double tableTop = trial.scene().facts.at("tableTop");
+	for (int k = 0; k < kFallSteps; ++k) trial.step();
+	const harness::TrialSummary s = trial.summary();
+	Verdict v;
+	v.unit = "m";
+	v.figure = double(top->getCenterOfMassPosition().y()) - tableTop;
+	v.expected = 0;
+	v.pass = !s.nonFinite && v.figure < 0;
+	v.detail = format("column of 5 boxes 1 m off the middle of a table top 0.8 m wide each way: must fall off; top box's centre %.3f m "
+					  "above the table top after 3 s (must be below)",
+					  v.figure);
+	if (s.nonFinite) v.detail += "; non-finite state";
+	v.msPerStep = s.msPerStep;
+	return v;
+}
+
 Verdict plankCribVerdict(const harness::SolverSpec& spec, int shape, int ground)
 {
 	return standsVerdict(spec, "plank_crib", {{"shape", shape}, {"ground", ground}}, "crib of 10 layers of two planks");
@@ -120,6 +142,18 @@ const std::vector<TruthCase>& gridCases()
 						  kGroundWords[ground.id] + " is in equilibrium and stands: every body within 1 cm for 10 s";
 			const int g = ground.id;
 			c.run = [g](const harness::SolverSpec& spec) { return tableStackVerdict(spec, g); };
+			all.push_back(c);
+		}
+		for (const Kind& ground : kGrounds)
+		{
+			TruthCase c;
+			c.name = std::string("TableStack_") + ground.name + "_FallsOffTheEdge";
+			c.group = "grid_structure";
+			c.statement = std::string("the same table on ") + kGroundWords[ground.id] +
+						  " with its column of 5 boxes 1 m off the middle (its centre of mass beyond the top's edge at 0.8 m): the "
+						  "column falls off, the top box below the table top within 3 s";
+			const int g = ground.id;
+			c.run = [g](const harness::SolverSpec& spec) { return tableStackFallsVerdict(spec, g); };
 			all.push_back(c);
 		}
 		for (const Kind& plank : kPlankShapes)
