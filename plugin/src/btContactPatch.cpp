@@ -248,35 +248,53 @@ bool over(const PatchSide& side, btScalar u, btScalar v, btScalar slack)
 	return true;
 }
 
-/// Where a side that is no face touches (a sphere, a capsule on its side, a box's edge or corner):
-/// its rim points nearest the other part along `facing` (within `reach` of the nearest), if they lie on one
-/// segment parallel to the tangent plane. Gives the segment's ends (one point: both the same).
-bool touchingSegment(const PatchSide& side, const btVector3& facing, btScalar reach, btScalar slack, btVector3& a, btVector3& b)
+/// The segment through `count` points, if they lie on one (within `slack`): its ends, the two
+/// points farthest apart (one point: both the same).
+bool segmentThrough(const btVector3* points, int count, btScalar slack, btVector3& a, btVector3& b)
 {
-	if (!side.convex || side.flatRim || side.rimCount < 1) return false;
-	btScalar nearest = BT_LARGE_FLOAT;
-	for (int k = 0; k < side.rimCount; ++k) nearest = btMin(nearest, -side.rim[k].dot(facing));
-	btVector3 touching[kRim];
-	int count = 0;
-	for (int k = 0; k < side.rimCount; ++k)
-		if (-side.rim[k].dot(facing) <= nearest + reach) touching[count++] = side.rim[k];
 	if (count == 0) return false;
-	a = b = touching[0];
+	a = b = points[0];
 	btScalar longest = 0;
 	for (int i = 0; i < count; ++i)
 		for (int j = i + 1; j < count; ++j)
 		{
-			const btScalar length2 = (touching[i] - touching[j]).length2();
+			const btScalar length2 = (points[i] - points[j]).length2();
 			if (length2 > longest)
 			{
 				longest = length2;
-				a = touching[i];
-				b = touching[j];
+				a = points[i];
+				b = points[j];
 			}
 		}
 	for (int k = 0; k < count; ++k)
-		if ((touching[k] - closestOnSegment(touching[k], a, b)).length2() > slack * slack) return false;
+		if ((points[k] - closestOnSegment(points[k], a, b)).length2() > slack * slack) return false;
 	return true;
+}
+
+/// Where a side that is no face touches (a sphere, a capsule on its side, a box's edge or corner):
+/// its rim points nearest the other part along `facing` (within `reach` of the nearest), if they lie on one
+/// segment parallel to the tangent plane. A rim edge that rises out of reach touches up to there
+/// (a tilted capsule along its line, not at its lower end only), if that stays one segment (a
+/// corner's edges leave it in several directions: the corner). Gives the segment's ends (one
+/// point: both the same) and the nearest rim point's level along -facing.
+bool touchingSegment(const PatchSide& side, const btVector3& facing, btScalar reach, btScalar slack, btVector3& a, btVector3& b, btScalar& nearest)
+{
+	if (!side.convex || side.flatRim || side.rimCount < 1) return false;
+	nearest = BT_LARGE_FLOAT;
+	for (int k = 0; k < side.rimCount; ++k) nearest = btMin(nearest, -side.rim[k].dot(facing));
+	btVector3 touching[2 * kRim];
+	int count = 0;
+	for (int k = 0; k < side.rimCount; ++k)
+		if (-side.rim[k].dot(facing) <= nearest + reach) touching[count++] = side.rim[k];
+	const int within = count;
+	for (int k = 0; k < side.rimCount; ++k)
+	{
+		const int next = (k + 1) % side.rimCount;
+		const btScalar height = -side.rim[k].dot(facing) - nearest, nextHeight = -side.rim[next].dot(facing) - nearest;
+		if ((height <= reach) != (nextHeight <= reach))
+			touching[count++] = side.rim[k] + (side.rim[next] - side.rim[k]) * ((reach - height) / (nextHeight - height));
+	}
+	return segmentThrough(touching, count, slack, a, b) || segmentThrough(touching, within, slack, a, b);
 }
 
 /// Moves a point's position on one body (A's if `onA`) to `position`, its local point with it.
@@ -404,15 +422,21 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 	// distance to the face there; the segment's ends are the patch's rim (candidates below).
 	btVector3 segment[2][2];
 	bool touching[2] = {false, false};
+	btScalar nearest[2] = {0, 0};  // each part's nearest rim point's level along its facing direction
 	for (int s = 0; s < 2; ++s)
 	{
 		const PatchSide& other = sides[1 - s];
 		touching[s] = (other.flat || other.concave || !faceNormal(other, n).isZero()) &&
-					  touchingSegment(sides[s], s == 0 ? -n : n, breaking, slack, segment[s][0], segment[s][1]);
+					  touchingSegment(sides[s], s == 0 ? -n : n, breaking, slack, segment[s][0], segment[s][1], nearest[s]);
 		for (int j = 0; j < initial && touching[s]; ++j)
 		{
 			btManifoldPoint& p = manifold.getContactPoint(j);
 			const btVector3 onPart = s == 0 ? p.getPositionWorldOnA() : p.getPositionWorldOnB();
+			// Only a point of the touching part, within reach of the nearest as the segment is: a
+			// point higher up is where another part of the surface nears the face (a tilted
+			// capsule's raised end, 12 mm up, moved 0.54 m onto its lower end and merged there
+			// left the capsule one support), a contact of its own that stays where Bullet has it.
+			if (-onPart.dot(s == 0 ? -n : n) > nearest[s] + breaking) continue;
 			const btVector3 onSegment = closestOnSegment(onPart, segment[s][0], segment[s][1]);
 			if (!((onSegment - onPart).length2() > btScalar(0))) continue;
 			btVector3 normal = n;
@@ -433,6 +457,16 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 			placeAlong(p, normal, distance, s == 0, objectA, objectB);
 		}
 	}
+	// Points that went onto the same spot (a rolling ball's old points, all back at its one point)
+	// are one contact: the later ones go (Bullet's removal: the app's callbacks run).
+	if (touching[0] || touching[1])
+		for (int j = manifold.getNumContacts() - 1; j > 0; --j)
+			for (int i = 0; i < j; ++i)
+				if ((manifold.getContactPoint(i).getPositionWorldOnA() - manifold.getContactPoint(j).getPositionWorldOnA()).length2() <= slack * slack)
+				{
+					manifold.removeContactPoint(j);
+					break;
+				}
 	const btManifoldPoint reference = manifold.getContactPoint(0);
 
 	// Candidates: rim points of either side within reach of the other's plane and over its face.
