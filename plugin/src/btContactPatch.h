@@ -52,9 +52,10 @@ btManifoldPoint btAddedContactPoint(const btManifoldPoint& reference, const btCo
 ///    heightfield each point takes the normal of the triangle under it (processAllTriangles) where
 ///    the convex face lies along it;
 /// 2. a part that is no face touches on its touching segment, the rim points within the breaking
-///    threshold of its nearest (a capsule on its side: its line's ends; a sphere or a corner: one
-///    point): every point on it goes back onto that segment (a point Bullet keeps is fixed in the
-///    part and lags beside the line once it rolls), at its distance to the face there;
+///    threshold of its nearest and where its rim's edges rise through that level (a capsule on its
+///    side: its line; a sphere or a corner: one point): every point on it within that level goes
+///    back onto the segment (a point Bullet keeps is fixed in the part and lags beside the line
+///    once it rolls), at its distance to the face there, and points on one spot merge;
 /// 3. candidates: rim points of either part's face, a touching segment's ends, and where an edge of
 ///    one face's rim crosses an edge of the other's (two planks crossing), within `reach` outside
 ///    or the breaking threshold inside the other part's face and over it (inside its rim polygon;
