@@ -184,9 +184,7 @@ std::unique_ptr<SceneContent> createDenseRandom(btDiscreteDynamicsWorld& world, 
 {
 	const int count = build::countParam(params, "count", 1);
 	const btScalar size = build::positiveParam(params, "size");
-	const double seedValue = getParam(params, "seed");
-	build::require(seedValue >= 0 && seedValue < 4294967296.0 && seedValue == std::floor(seedValue), "seed must be a whole number in [0, 2^32)");
-	const auto seed = static_cast<std::uint32_t>(seedValue);
+	const std::uint32_t seed = build::seedParam(params);
 	const btScalar width = build::positiveParam(params, "width");
 	const btScalar dropHeight = build::nonNegativeParam(params, "dropHeight");
 	const btScalar mass = build::positiveParam(params, "mass");
@@ -208,16 +206,7 @@ std::unique_ptr<SceneContent> createDenseRandom(btDiscreteDynamicsWorld& world, 
 	build::addGround(*content, 4 * width, mu);
 
 	// Four static walls, as tall as the grid, whose inner faces bound the pit |x|, |z| <= width / 2.
-	const btScalar wallHalfThickness = btScalar(0.1);  // m
-	const btScalar wallHalfHeight = gridTop / 2;
-	const btScalar wallHalfLength = width / 2 + 2 * wallHalfThickness;  // closes the corners
-	const btScalar wallCentre = width / 2 + wallHalfThickness;
-	btCollisionShape* wallX = content->addShape(new btBoxShape(btVector3(wallHalfThickness, wallHalfHeight, wallHalfLength)));
-	btCollisionShape* wallZ = content->addShape(new btBoxShape(btVector3(wallHalfLength, wallHalfHeight, wallHalfThickness)));
-	content->addBody(wallX, 0, build::at(-wallCentre, wallHalfHeight, 0), mu);
-	content->addBody(wallX, 0, build::at(wallCentre, wallHalfHeight, 0), mu);
-	content->addBody(wallZ, 0, build::at(0, wallHalfHeight, -wallCentre), mu);
-	content->addBody(wallZ, 0, build::at(0, wallHalfHeight, wallCentre), mu);
+	build::addSquarePit(*content, width, gridTop / 2, mu);
 
 	std::mt19937 rng(seed);
 	const btScalar half = size / 2;

@@ -6,6 +6,7 @@
 
 #include "scenes/Scene.h"
 
+#include <cstdint>
 #include <string>
 
 namespace scenes
@@ -89,6 +90,11 @@ int countParam(const Params& params, const std::string& name, int minimum);
 btScalar positiveParam(const Params& params, const std::string& name);
 /// Parameter that must be >= 0; throws std::invalid_argument otherwise.
 btScalar nonNegativeParam(const Params& params, const std::string& name);
+/// The "seed" parameter of a seeded scene: a whole number in [0, 2^32); throws std::invalid_argument otherwise.
+std::uint32_t seedParam(const Params& params);
+/// Four static walls (0.2 m thick, `halfHeight` high from the ground) whose inner faces bound the
+/// square pit |x|, |z| <= width / 2, friction `mu`; they close its corners.
+void addSquarePit(SceneContent& content, btScalar width, btScalar halfHeight, btScalar mu);
 /// Throws std::invalid_argument(what) unless `ok` (createScene() prefixes the scene name).
 void require(bool ok, const std::string& what);
 

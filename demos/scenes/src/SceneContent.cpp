@@ -231,6 +231,26 @@ btScalar nonNegativeParam(const Params& params, const std::string& name)
 	return btScalar(value);
 }
 
+std::uint32_t seedParam(const Params& params)
+{
+	const double seed = getParam(params, "seed");
+	require(seed >= 0 && seed < 4294967296.0 && seed == std::floor(seed), "seed must be a whole number in [0, 2^32)");
+	return static_cast<std::uint32_t>(seed);
+}
+
+void addSquarePit(SceneContent& content, btScalar width, btScalar halfHeight, btScalar mu)
+{
+	const btScalar halfThickness = btScalar(0.1);           // m
+	const btScalar halfLength = width / 2 + 2 * halfThickness;  // closes the corners
+	const btScalar centre = width / 2 + halfThickness;
+	btCollisionShape* wallX = content.addShape(new btBoxShape(btVector3(halfThickness, halfHeight, halfLength)));
+	btCollisionShape* wallZ = content.addShape(new btBoxShape(btVector3(halfLength, halfHeight, halfThickness)));
+	content.addBody(wallX, 0, at(-centre, halfHeight, 0), mu);
+	content.addBody(wallX, 0, at(centre, halfHeight, 0), mu);
+	content.addBody(wallZ, 0, at(0, halfHeight, -centre), mu);
+	content.addBody(wallZ, 0, at(0, halfHeight, centre), mu);
+}
+
 void require(bool ok, const std::string& what)
 {
 	if (!ok)

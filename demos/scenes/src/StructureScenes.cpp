@@ -6,7 +6,6 @@
 #include "SceneCatalog.h"
 
 #include <cmath>
-#include <cstdint>
 #include <random>
 
 namespace scenes
@@ -19,12 +18,6 @@ btVector3 boxInertia(const btVector3& h, btScalar m)
 	return btScalar(4) * m / btScalar(12) * btVector3(h.y() * h.y() + h.z() * h.z(), h.x() * h.x() + h.z() * h.z(), h.x() * h.x() + h.y() * h.y());
 }
 
-std::uint32_t seedParam(const Params& params)
-{
-	const double seed = getParam(params, "seed");
-	build::require(seed >= 0 && seed < 4294967296.0 && seed == std::floor(seed), "seed must be a whole number in [0, 2^32)");
-	return static_cast<std::uint32_t>(seed);
-}
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------
@@ -175,7 +168,7 @@ Params hullBinParams()
 std::unique_ptr<SceneContent> createHullBin(btDiscreteDynamicsWorld& world, const Params& params)
 {
 	const int count = build::countParam(params, "count", 1);
-	std::mt19937 rng(seedParam(params));
+	std::mt19937 rng(build::seedParam(params));
 	const btScalar width = build::positiveParam(params, "width");
 	const btScalar mass = build::positiveParam(params, "mass");
 	const btScalar mu = build::nonNegativeParam(params, "mu");
@@ -191,15 +184,7 @@ std::unique_ptr<SceneContent> createHullBin(btDiscreteDynamicsWorld& world, cons
 
 	auto content = std::make_unique<SceneContent>(world);
 	build::addGroundOf(*content, build::countParam(params, "ground", 0), 2 * width, mu);
-	const btScalar wallHalfThickness = btScalar(0.1);
-	const btScalar wallHalfLength = width / 2 + 2 * wallHalfThickness;
-	const btScalar wallCentre = width / 2 + wallHalfThickness;
-	btCollisionShape* wallX = content->addShape(new btBoxShape(btVector3(wallHalfThickness, wallHalfHeight, wallHalfLength)));
-	btCollisionShape* wallZ = content->addShape(new btBoxShape(btVector3(wallHalfLength, wallHalfHeight, wallHalfThickness)));
-	content->addBody(wallX, 0, build::at(-wallCentre, wallHalfHeight, 0), mu);
-	content->addBody(wallX, 0, build::at(wallCentre, wallHalfHeight, 0), mu);
-	content->addBody(wallZ, 0, build::at(0, wallHalfHeight, -wallCentre), mu);
-	content->addBody(wallZ, 0, build::at(0, wallHalfHeight, wallCentre), mu);
+	build::addSquarePit(*content, width, wallHalfHeight, mu);
 
 	const btScalar firstCell = -btScalar(perSide - 1) * cell / 2;
 	for (int i = 0; i < count; ++i)
