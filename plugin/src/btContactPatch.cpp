@@ -513,11 +513,13 @@ int btCompleteContactPatch(btPersistentManifold& manifold, btScalar reach, btSca
 	// Two faces crossing (planks of a crib, hulls whose faces overlap in part): the patch's corners
 	// are also where an edge of one rim crosses an edge of the other (their polygons' intersection,
 	// as face clipping finds it). Each crossing is a candidate on A's face, at the faces' distance.
-	if (sides[0].flatRim && sides[1].flatRim)
+	const bool bothFaces = sides[0].flatRim && sides[1].flatRim;
+	const btScalar heightA = bothFaces ? sides[0].rim[0].dot(n) : btScalar(0);
+	const btScalar faceDistance = bothFaces ? heightA - sides[1].rim[0].dot(n) : BT_LARGE_FLOAT;
+	if (faceDistance <= reach && faceDistance >= -breaking)
 	{
-		const btScalar heightA = sides[0].rim[0].dot(n), heightB = sides[1].rim[0].dot(n);
-		const btScalar distance = heightA - heightB;
-		for (int i = 0; i < sides[0].rimCount && distance <= reach && distance >= -breaking; ++i)
+		const btScalar distance = faceDistance;
+		for (int i = 0; i < sides[0].rimCount; ++i)
 		{
 			const int i1 = (i + 1) % sides[0].rimCount;
 			const btScalar au = sides[0].rimU[i], av = sides[0].rimV[i];

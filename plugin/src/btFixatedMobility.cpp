@@ -44,16 +44,43 @@ subject to the following restrictions:
 
 namespace
 {
-struct Jacobian
+btScalar innerW(const btVector3& gLinear, const btVector3& gAngular, const btVector3& hLinear, const btVector3& hAngular, btScalar invMass,
+				const btMatrix3x3& invInertia)
 {
-	btVector3 m_linear, m_angular;
-};
-
-btScalar innerW(const Jacobian& g, const Jacobian& h, btScalar invMass, const btMatrix3x3& invInertia)
-{
-	return invMass * g.m_linear.dot(h.m_linear) + g.m_angular.dot(invInertia * h.m_angular);
+	return invMass * gLinear.dot(hLinear) + gAngular.dot(invInertia * hAngular);
 }
 }  // namespace
+
+int btShockPredictor::supportBasis(int body, btScalar invMass, const btMatrix3x3& invInertia, bool resistingOnly, SupportDirection basis[6],
+								   bool& oneSided) const
+{
+	int rank = 0;
+	oneSided = false;
+	for (int k = m_supportStart[body]; k < m_supportStart[body + 1] && rank < 6; ++k)
+	{
+		const Row& r = m_rows[m_supportRows[k]];
+		if (!r.m_fixed) continue;
+		oneSided = true;
+		if (resistingOnly && r.m_normal && !(r.m_row->m_friction > btScalar(0))) continue;  // cannot resist
+		SupportDirection g;
+		freeSide(r, g.m_linear, g.m_angular);
+		const btScalar norm = innerW(g.m_linear, g.m_angular, g.m_linear, g.m_angular, invMass, invInertia);
+		if (!(norm > btScalar(0))) continue;
+		for (int j = 0; j < rank; ++j)
+		{
+			const btScalar p = innerW(g.m_linear, g.m_angular, basis[j].m_linear, basis[j].m_angular, invMass, invInertia);
+			g.m_linear -= basis[j].m_linear * p;
+			g.m_angular -= basis[j].m_angular * p;
+		}
+		const btScalar left = innerW(g.m_linear, g.m_angular, g.m_linear, g.m_angular, invMass, invInertia);
+		if (!(left > spanMinPivot() * norm)) continue;
+		const btScalar scale = btScalar(1) / btSqrt(left);
+		basis[rank].m_linear = g.m_linear * scale;
+		basis[rank].m_angular = g.m_angular * scale;
+		++rank;
+	}
+	return rank;
+}
 
 void btShockPredictor::formMobility(const btAlignedObjectArray<btSolverBody>& bodies)
 {
@@ -77,32 +104,9 @@ void btShockPredictor::formMobility(const btAlignedObjectArray<btSolverBody>& bo
 		if (!supportFactor(b, span)) continue;  // grounded as a cluster's member
 		const btScalar invMass = rb->getInvMass();
 		const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
-		Jacobian basis[6];
-		int rank = 0;
+		SupportDirection basis[6];
 		bool oneSided = false;
-		for (int k = m_supportStart[b]; k < m_supportStart[b + 1] && rank < 6; ++k)
-		{
-			const Row& r = m_rows[m_supportRows[k]];
-			if (!r.m_fixed) continue;
-			oneSided = true;
-			if (r.m_normal && !(r.m_row->m_friction > btScalar(0))) continue;  // cannot resist
-			Jacobian g;
-			freeSide(r, g.m_linear, g.m_angular);
-			const btScalar norm = innerW(g, g, invMass, invInertia);
-			if (!(norm > btScalar(0))) continue;
-			for (int j = 0; j < rank; ++j)
-			{
-				const btScalar p = innerW(g, basis[j], invMass, invInertia);
-				g.m_linear -= basis[j].m_linear * p;
-				g.m_angular -= basis[j].m_angular * p;
-			}
-			const btScalar left = innerW(g, g, invMass, invInertia);
-			if (!(left > spanMinPivot() * norm)) continue;
-			const btScalar scale = btScalar(1) / btSqrt(left);
-			basis[rank].m_linear = g.m_linear * scale;
-			basis[rank].m_angular = g.m_angular * scale;
-			++rank;
-		}
+		const int rank = supportBasis(b, invMass, invInertia, true, basis, oneSided);
 		if (!oneSided || rank == 6) continue;
 		// W' = W - sum_k (W h_k)(W h_k)^T in blocks: linear-linear, linear-angular, angular-angular.
 		Mobility mobility;

@@ -274,31 +274,14 @@ bool btShockPredictor::carriesOwnLoad(int body, const btSolverBody& solverBody) 
 	const btVector3 force = rb->getTotalForce(), torque = rb->getTotalTorque();
 	const btScalar total = invMass * force.length2() + torque.dot(invInertia * torque);
 	if (!(total > btScalar(0))) return false;
-	btVector3 basisLinear[6], basisAngular[6];
-	int rank = 0;
+	SupportDirection basis[6];
+	bool oneSided = false;
+	const int rank = supportBasis(body, invMass, invInertia, false, basis, oneSided);
 	btScalar carried = 0;
-	for (int k = m_supportStart[body]; k < m_supportStart[body + 1] && rank < 6; ++k)
+	for (int k = 0; k < rank; ++k)
 	{
-		const Row& r = m_rows[m_supportRows[k]];
-		if (!r.m_fixed) continue;
-		btVector3 n, cr;
-		freeSide(r, n, cr);
-		const btScalar norm = invMass * n.length2() + cr.dot(invInertia * cr);
-		if (!(norm > btScalar(0))) continue;
-		for (int j = 0; j < rank; ++j)
-		{
-			const btScalar p = invMass * n.dot(basisLinear[j]) + cr.dot(invInertia * basisAngular[j]);
-			n -= basisLinear[j] * p;
-			cr -= basisAngular[j] * p;
-		}
-		const btScalar left = invMass * n.length2() + cr.dot(invInertia * cr);
-		if (!(left > spanMinPivot() * norm)) continue;
-		const btScalar scale = btScalar(1) / btSqrt(left);
-		basisLinear[rank] = n * scale;
-		basisAngular[rank] = cr * scale;
-		const btScalar along = invMass * force.dot(basisLinear[rank]) + torque.dot(invInertia * basisAngular[rank]);
+		const btScalar along = invMass * force.dot(basis[k].m_linear) + torque.dot(invInertia * basis[k].m_angular);
 		carried += along * along;
-		++rank;
 	}
 	return rank > 0 && total - carried <= spanMinPivot() * total;
 }

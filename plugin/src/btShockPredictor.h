@@ -253,6 +253,17 @@ private:
 	};
 	btAlignedObjectArray<int> m_mobile;
 	btAlignedObjectArray<Mobility> m_mobility;
+	/// A direction of a body's support rows (its side's Jacobian), made W-orthonormal.
+	struct SupportDirection
+	{
+		btVector3 m_linear, m_angular;
+	};
+	/// W-orthonormal basis (h_k^T W h_j = delta_jk, W = diag(invMass I, invInertia)) of the body's
+	/// one-sided support rows' Jacobians, by Gram-Schmidt in row order: a row is kept if its norm
+	/// left after the projections is above spanMinPivot() of its own. With resistingOnly, friction
+	/// and rolling rows whose coefficient is 0 are skipped (they cannot resist). Returns the rank;
+	/// oneSided says whether any support row is one-sided.
+	int supportBasis(int body, btScalar invMass, const btMatrix3x3& invInertia, bool resistingOnly, SupportDirection basis[6], bool& oneSided) const;
 	void formMobility(const btAlignedObjectArray<btSolverBody>& bodies);
 	void mobileResponse(const Row& r, btScalar impulse, btVector3& dv, btVector3& dw) const;
 	/// Moves a row's mobile fixated side by W' J^T (sign impulse): at once as the row changes
