@@ -325,7 +325,7 @@ def plot_truth_grid(rows, out_dir):
     ax.set_xlabel("mean ms per step over the cases (log)")
     ax.set_ylabel(f"truths held (of {top})")
     per = ", ".join(f"{sum(1 for c in dict.fromkeys((r['case'], r['group']) for r in rows) if c[1] == g)} {g}" for g in groups)
-    ax.set_title(f"Shape grid (5 shapes x 5 grounds): physics statements held against cost per step\n({per})", fontsize=11)
+    ax.set_title(f"Shape grid (shapes and structures x 5 grounds): physics statements held against cost per step\n({per})", fontsize=11)
     ax.grid(True, which="major", alpha=0.3)
     ax.legend(fontsize=8, loc="upper left", title="hollow: some cases skipped (MLCP over its time limit)", title_fontsize=7)
     low, high = ax.get_xlim()
