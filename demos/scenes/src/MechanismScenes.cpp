@@ -230,6 +230,7 @@ Params dominoRowParams()
 		{"width", 0.5, "m", "domino extent along z"},
 		{"mass", 1, "kg", "mass of each domino"},
 		{"tipRate", 1, "rad/s", "initial angular speed of the first domino about its front bottom edge"},
+		{"shape", 0, "-", "domino shape (0 box, 1 hull, 2 hull+features, 5 compound)"},
 	};
 }
 
@@ -241,11 +242,13 @@ std::unique_ptr<SceneContent> createDominoRow(btDiscreteDynamicsWorld& world, co
 	const btVector3 half = btScalar(0.5) * btVector3(build::positiveParam(params, "thickness"), build::positiveParam(params, "height"), build::positiveParam(params, "width"));
 	const btScalar mass = build::positiveParam(params, "mass");
 	const btScalar tipRate = build::nonNegativeParam(params, "tipRate");
+	const int shapeKind = build::countParam(params, "shape", 0);
 	build::require(spacing > 2 * half.x() + btScalar(build::kSideGap), "spacing must exceed the domino thickness");
+	build::require(shapeKind <= 2 || shapeKind == build::kCompound, "shape must be 0, 1, 2 or 5: a domino is a slab");
 
 	auto content = std::make_unique<SceneContent>(world);
 	build::addGround(*content, 2 * btScalar(count) * spacing, mu);
-	btCollisionShape* shape = content->addShape(new btBoxShape(half));
+	btCollisionShape* shape = build::addShapeOf(*content, shapeKind, half);
 	const btScalar y = build::columnCentreY(0, half.y(), 0);
 	const btScalar firstX = -btScalar(count - 1) * spacing / 2;
 	btRigidBody* domino = nullptr;
