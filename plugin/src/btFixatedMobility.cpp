@@ -100,8 +100,7 @@ void btShockPredictor::formMobility(const btAlignedObjectArray<btSolverBody>& bo
 			yielding = r.m_fixed && r.m_normal && !(r.m_row->m_friction > btScalar(0));
 		}
 		if (!yielding) continue;
-		btCholesky6 span;
-		if (!supportFactor(b, span)) continue;  // grounded as a cluster's member
+		if (!supportFactor(b)) continue;  // grounded as a cluster's member
 		const btScalar invMass = rb->getInvMass();
 		const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
 		SupportDirection basis[6];
@@ -129,8 +128,9 @@ void btShockPredictor::formMobility(const btAlignedObjectArray<btSolverBody>& bo
 		m_mobility.push_back(mobility);
 	}
 	// Each one-sided row whose fixated side is mobile: the free body's update for a support of
-	// inverse mass W'.
-	for (int i = 0; i < m_rows.size(); ++i)
+	// inverse mass W'. Without mobile bodies every row keeps the m_fixedTerm of 0 that addRow and
+	// freeBothSides give it, and the pass over the rows is skipped.
+	for (int i = 0; i < m_rows.size() && m_mobility.size(); ++i)
 	{
 		Row& r = m_rows[i];
 		r.m_fixedTerm = 0;

@@ -56,7 +56,7 @@ void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodi
 	// body would hand it a load it cannot pass on.
 	m_grounded.resize(bodies.size());
 	m_clusterNodes.resize(bodies.size());
-	m_clusterRowNext.resize(m_rows.size());
+	m_clusterRowNext.resizeNoInitialize(m_rows.size());  // a row's link is written as it is linked
 	for (int i = 0; i < bodies.size(); ++i)
 	{
 		const btRigidBody* rb = bodies[i].m_originalBody;
@@ -75,16 +75,23 @@ void btShockPredictor::groundRows(const btAlignedObjectArray<btSolverBody>& bodi
 				Row& r = m_rows[m_supportRows[j]];
 				if (r.m_fixed && (m_grounded[fixedSide(r)] != 1 || (r.m_kind == CONTACT && !pushCarried(r, bodies)))) freeBothSides(r);
 			}
-			// A friction or rolling row follows its contact: one-sided only while the contact is.
+			// A friction or rolling row follows its contact: one-sided only while the contact is. The
+			// body's contact rows freed above are listed first (none, in a stack that stands), so
+			// each friction row looks among those instead of among all the body's rows.
+			m_freedContacts.resize(0);
 			for (int j = m_supportStart[b]; j < m_supportStart[b + 1]; ++j)
+			{
+				const Row& r = m_rows[m_supportRows[j]];
+				if (!r.m_normal && !r.m_fixed) m_freedContacts.push_back(r.m_row);
+			}
+			for (int j = m_supportStart[b]; j < m_supportStart[b + 1] && m_freedContacts.size(); ++j)
 			{
 				Row& r = m_rows[m_supportRows[j]];
 				if (!r.m_fixed || !r.m_normal) continue;
-				for (int q = m_supportStart[b]; q < m_supportStart[b + 1]; ++q)
-					if (m_rows[m_supportRows[q]].m_row == r.m_normal && !m_rows[m_supportRows[q]].m_fixed) freeBothSides(r);
+				for (int q = 0; q < m_freedContacts.size(); ++q)
+					if (m_freedContacts[q] == r.m_normal) freeBothSides(r);
 			}
-			btCholesky6 span;
-			m_grounded[b] = supportFactor(b, span) ? 1 : 2;  // 2: decided, not grounded (alone, so far)
+			m_grounded[b] = supportFactor(b) ? 1 : 2;  // 2: decided, not grounded (alone, so far)
 			if (m_grounded[b] != 2) continue;
 			m_loose.push_back(b);
 			ClusterNode& node = m_clusterNodes[b];
@@ -205,10 +212,11 @@ bool btShockPredictor::clusterSpans(int root)
 	return true;
 }
 
-void btShockPredictor::addSupportRows(int body, btScalar* A, int stride, int offset) const
+int btShockPredictor::addSupportRows(int body, btScalar* A, int stride, int offset) const
 {
 	// Adds J_r J_r^T (the body's side) of each one-sided support row to the lower triangle of the
-	// 6 x 6 block of A (row length stride) that starts at (offset, offset).
+	// 6 x 6 block of A (row length stride) that starts at (offset, offset). Returns the rows added.
+	int added = 0;
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
 		const Row& r = m_rows[m_supportRows[k]];
@@ -216,31 +224,48 @@ void btShockPredictor::addSupportRows(int body, btScalar* A, int stride, int off
 		btVector3 n, cr;
 		freeSide(r, n, cr);
 		const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
+		BT_CHOLESKY6_UNROLL
 		for (int i = 0; i < 6; ++i)
+			BT_CHOLESKY6_UNROLL
 			for (int j = 0; j <= i; ++j) A[(offset + i) * stride + offset + j] += J[i] * J[j];
+		++added;
 	}
+	return added;
 }
 
-bool btShockPredictor::supportFactor(int body, btCholesky6& factor) const
+const btCholesky6* btShockPredictor::supportFactor(int body) const
 {
 	// A = sum over the body's one-sided support rows of J_r J_r^T (its side), factored: it has
 	// full rank where the rows fix all six degrees of freedom. Formed once per body and step, by
-	// grounding (welds, the held test, the settle and the mobility ask for it again).
+	// grounding (welds, the held test, the settle and the mobility ask for it again), in its slot
+	// of m_spanFactors: the callers read it there instead of each copying it.
 	const bool cached = body < m_spanState.size();
-	if (cached && m_spanState[body] != 0)
-	{
-		if (m_spanState[body] == 1) factor = m_spanFactors[body];
-		return m_spanState[body] == 1;
-	}
+	if (cached && m_spanState[body] != 0) return m_spanState[body] == 1 ? &m_spanFactors[body] : 0;
 	btScalar A[6][6] = {};
-	addSupportRows(body, &A[0][0], 6, 0);
+	// The body's rows still one-sided: all addRow summed (m_supportSums, in the same order as
+	// addSupportRows would add them) unless grounding has freed some since.
+	int fixed = 0;
+	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
+		if (m_rows[m_supportRows[k]].m_fixed) ++fixed;
+	int rows;
+	if (body < m_supportSumRows.size() && fixed == m_supportSumRows[body])
+	{
+		const btScalar* sums = &m_supportSums[body * 21];
+		for (int i = 0; i < 6; ++i)
+			for (int j = 0; j <= i; ++j) A[i][j] = sums[i * (i + 1) / 2 + j];
+		rows = fixed;
+	}
+	else
+		rows = addSupportRows(body, &A[0][0], 6, 0);
+	// Factored in place: factor() writes all that solve() reads (the lower triangle, the scales).
+	btCholesky6& factor = cached ? m_spanFactors[body] : m_spanScratch;
 	const bool spans = factor.factor(A, btScalar(0), spanMinPivot(), true);
 	if (cached)
 	{
 		m_spanState[body] = spans ? 1 : 2;
-		if (spans) m_spanFactors[body] = factor;
+		m_spanRowCount[body] = rows;
 	}
-	return spans;
+	return spans ? &factor : 0;
 }
 
 bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBody>& bodies, btScalar speed)
@@ -248,14 +273,17 @@ bool btShockPredictor::heldBySupports(int body, btAlignedObjectArray<btSolverBod
 	// Held: the support rows fix all six of the body's degrees of freedom (a body on one point or
 	// one edge can still turn about it) and every one's relative velocity (whole velocities, not
 	// Bullet's deltas) is within the convergence speed.
-	btCholesky6 span;
-	if (!supportFactor(body, span)) return false;
+	if (!supportFactor(body)) return false;
+	// The body is one side of each of its support rows: its whole velocity is formed once.
+	const btVector3 linear = wholeLinear(bodies[body]), angular = wholeAngular(bodies[body]);
 	for (int k = m_supportStart[body]; k < m_supportStart[body + 1]; ++k)
 	{
-		const btSolverConstraint& c = *m_rows[m_supportRows[k]].m_row;
-		btSolverBody& a = bodies[c.m_solverBodyIdA];
-		btSolverBody& b = bodies[c.m_solverBodyIdB];
-		const btScalar v = rowVelocity(c, wholeLinear(a), wholeAngular(a), wholeLinear(b), wholeAngular(b));
+		const Row& r = m_rows[m_supportRows[k]];
+		const btSolverConstraint& c = *r.m_row;
+		const bool isA = r.m_bodyA == body;
+		btSolverBody& other = bodies[isA ? r.m_bodyB : r.m_bodyA];
+		const btVector3 otherLinear = wholeLinear(other), otherAngular = wholeAngular(other);
+		const btScalar v = isA ? rowVelocity(c, linear, angular, otherLinear, otherAngular) : rowVelocity(c, otherLinear, otherAngular, linear, angular);
 		if (btFabs(v) > speed) return false;
 	}
 	return true;
@@ -299,8 +327,7 @@ bool btShockPredictor::pushCarried(const Row& r, const btAlignedObjectArray<btSo
 	const int F = fixedSide(r);
 	const btRigidBody* rb = bodies[F].m_originalBody;
 	if (!rb || !(rb->getInvMass() > btScalar(0))) return true;
-	btCholesky6 span;
-	if (!supportFactor(F, span)) return true;
+	if (!supportFactor(F)) return true;
 	const btVector3 push = r.m_fixed == 1 ? r.m_row->m_contactNormal1 : r.m_row->m_contactNormal2;
 	for (int k = m_supportStart[F]; k < m_supportStart[F + 1]; ++k)
 	{

@@ -43,6 +43,8 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 	r.m_fixedTerm = 0;
 	r.m_free = -1;
 	r.m_pastLimit = false;
+	r.m_bodyA = c.m_solverBodyIdA;
+	r.m_bodyB = c.m_solverBodyIdB;
 	const int hA = heightOfSolverBody[c.m_solverBodyIdA];
 	const int hB = heightOfSolverBody[c.m_solverBodyIdB];
 	// A side is fixated in layer k if it is not above the layer (height <= k); a component
@@ -68,6 +70,18 @@ void btShockPredictor::addRow(btSolverConstraint& c, const btSolverConstraint* n
 			r.m_free = fixA ? c.m_solverBodyIdB : c.m_solverBodyIdA;
 			r.m_total = total;
 			r.m_scale = scale;
+			// The free body's sum of J J^T over its one-sided rows (supportFactor), formed here while
+			// the row is at hand. A body's rows are added in the order its support rows list them
+			// (contacts, friction, rolling, each in pool order: their order in m_rows).
+			btVector3 n, cr;
+			freeSide(r, n, cr);
+			const btScalar J[6] = {n.x(), n.y(), n.z(), cr.x(), cr.y(), cr.z()};
+			btScalar* sums = &m_supportSums[r.m_free * 21];
+			BT_CHOLESKY6_UNROLL
+			for (int i = 0; i < 6; ++i)
+				BT_CHOLESKY6_UNROLL
+				for (int j = 0; j <= i; ++j) sums[i * (i + 1) / 2 + j] += J[i] * J[j];
+			++m_supportSumRows[r.m_free];
 		}
 		else
 			r.m_pastLimit = true;
@@ -108,7 +122,15 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 	m_cursor[keys] = total;
 	m_layerStart.resize(numLayers + 1);
 	for (int k = 0; k <= numLayers; ++k) m_layerStart[k] = m_cursor[k * 3];
-	m_rows.resize(total);
+	// The solver is called once per island, so these arrays shrink and grow within a step: a slot
+	// that is written before it is read is not filled on growing (resizeNoInitialize), and the
+	// per-body caches read only where this step formed them only grow (their size is no test).
+	m_rows.resizeNoInitialize(total);  // addRow writes every slot
+	const int numBodies = pools.m_bodies.size();
+	m_supportSums.resizeNoInitialize(numBodies * 21);
+	m_supportSumRows.resizeNoInitialize(numBodies);
+	for (int i = 0; i < m_supportSums.size(); ++i) m_supportSums[i] = 0;
+	for (int i = 0; i < numBodies; ++i) m_supportSumRows[i] = 0;
 	for (int i = 0; i < numContacts; ++i)
 		if (contactRowLayer[i] >= 0 && contactRowLayer[i] < numLayers)
 			addRow(pools.m_contacts[i], 0, CONTACT, contactRowLayer[i], pools.m_bodies, heightOfSolverBody);
@@ -122,15 +144,23 @@ void btShockPredictor::build(const Pools& pools, int numLayers, const btAlignedO
 		}
 	bucketSupportRows(pools.m_bodies.size());
 	m_spanState.resize(pools.m_bodies.size());
-	m_spanFactors.resize(pools.m_bodies.size());
+	if (m_spanFactors.size() < numBodies) m_spanFactors.resize(numBodies);
+	if (m_spanRowCount.size() < numBodies) m_spanRowCount.resize(numBodies);
 	for (int i = 0; i < m_spanState.size(); ++i) m_spanState[i] = 0;
 	groundRows(pools.m_bodies, heightOfSolverBody);
-	bucketSupportRows(pools.m_bodies.size());
+	// Grounding only frees rows (their free side becomes -1): where it freed none of the rows
+	// bucketed, bucketing again gives the same lists.
+	bool freed = false;
+	for (int k = 0; k < m_supportRows.size() && !freed; ++k) freed = m_rows[m_supportRows[k]].m_free < 0;
+	if (freed) bucketSupportRows(pools.m_bodies.size());
 	formMobility(pools.m_bodies);
+	m_inertiaState.resize(pools.m_bodies.size());
+	for (int i = 0; i < m_inertiaState.size(); ++i) m_inertiaState[i] = 0;
+	if (m_inertia.size() < numBodies) m_inertia.resize(numBodies);
 	m_blockState.resize(pools.m_bodies.size());
-	m_blockFactors.resize(pools.m_bodies.size());
+	if (m_blockFactors.size() < numBodies) m_blockFactors.resize(numBodies);
 	for (int i = 0; i < m_blockState.size(); ++i) m_blockState[i] = 0;
-	m_blockIncluded.resize(m_supportRows.size());
+	m_blockIncluded.resizeNoInitialize(m_supportRows.size());  // read only after this step's block wrote it
 }
 
 void btShockPredictor::warmStartPastLimit(const Pools& pools, btScalar factor)
@@ -159,8 +189,8 @@ void btShockPredictor::bucketSupportRows(int numBodies)
 	for (int i = 0; i < m_rows.size(); ++i)
 		if (m_rows[i].m_free >= 0) ++m_supportStart[m_rows[i].m_free + 1];
 	for (int i = 0; i < numBodies; ++i) m_supportStart[i + 1] += m_supportStart[i];
-	m_supportRows.resize(m_supportStart[numBodies]);
-	m_count.resize(numBodies);
+	m_supportRows.resizeNoInitialize(m_supportStart[numBodies]);  // every slot written below
+	m_count.resizeNoInitialize(numBodies);
 	for (int i = 0; i < numBodies; ++i) m_count[i] = m_supportStart[i];
 	m_layerFreeStart.resize(m_numLayers + 1);
 	m_layerFree.resize(0);
@@ -178,6 +208,25 @@ void btShockPredictor::bucketSupportRows(int numBodies)
 	m_layerFreeStart[m_numLayers] = m_layerFree.size();
 }
 
+const btMatrix3x3* btShockPredictor::worldInertia(int body, const btRigidBody& rb) const
+{
+	const btMatrix3x3& invInertia = rb.getInvInertiaTensorWorld();
+	if (!(body < m_inertiaState.size()))
+	{
+		// Outside the step's arrays: formed for this call.
+		if (!(btFabs(invInertia.determinant()) > SIMD_EPSILON)) return 0;
+		m_inertiaScratch = invInertia.inverse();
+		return &m_inertiaScratch;
+	}
+	if (m_inertiaState[body] == 0)
+	{
+		const bool regular = btFabs(invInertia.determinant()) > SIMD_EPSILON;
+		if (regular) m_inertia[body] = invInertia.inverse();
+		m_inertiaState[body] = regular ? 1 : 2;
+	}
+	return m_inertiaState[body] == 1 ? &m_inertia[body] : 0;
+}
+
 void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
 {
 	m_startLinear.resize(bodies.size());
@@ -187,10 +236,8 @@ void btShockPredictor::recordStart(btAlignedObjectArray<btSolverBody>& bodies)
 		m_startLinear[i] = bodies[i].internalGetDeltaLinearVelocity();
 		m_startAngular[i] = bodies[i].internalGetDeltaAngularVelocity();
 	}
-	for (int i = 0; i < m_rows.size(); ++i)
-	{
-		m_rows[i].m_start = m_rows[i].m_row->m_appliedImpulse;
-	}
+	// The rows' impulses before the passes were recorded by the residual just before (residual):
+	// one pass over the rows fewer.
 }
 
 btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies)
@@ -219,10 +266,9 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 		const btVector3 v = body.m_linearVelocity + body.m_externalForceImpulse + m_startLinear[i];
 		const btVector3 w = body.m_angularVelocity + body.m_externalTorqueImpulse + m_startAngular[i];
 		const btScalar mass = btScalar(1) / rb->getInvMass();
-		const btMatrix3x3& invInertia = rb->getInvInertiaTensorWorld();
 		// I dw from I^-1 (I dw) = dw: the momentum the passes gave the body's spin.
 		btVector3 Idw(0, 0, 0);
-		if (btFabs(invInertia.determinant()) > SIMD_EPSILON) Idw = invInertia.inverse() * dw;
+		if (const btMatrix3x3* inertia = worldInertia(i, *rb)) Idw = *inertia * dw;
 		m_slope[component] += mass * dv.dot(v) + Idw.dot(w);
 		m_curvature[component] += mass * dv.length2() + Idw.dot(dw);
 	}
@@ -255,206 +301,6 @@ btScalar btShockPredictor::lineSearch(btAlignedObjectArray<btSolverBody>& bodies
 	return largest;
 }
 
-btScalar btShockPredictor::solveRow(Row& r, btAlignedObjectArray<btSolverBody>& bodies)
-{
-	btSolverConstraint& c = *r.m_row;
-	boundByNormal(r);
-	if (r.m_scale == btScalar(0)) return 0;
-	btSolverBody& a = bodies[c.m_solverBodyIdA];
-	btSolverBody& b = bodies[c.m_solverBodyIdB];
-	const btScalar velocity = rowVelocity(c, a.internalGetDeltaLinearVelocity(), a.internalGetDeltaAngularVelocity(), b.internalGetDeltaLinearVelocity(),
-										  b.internalGetDeltaAngularVelocity());
-	btScalar delta = r.m_scale * (c.m_rhs + r.m_restTarget - c.m_appliedImpulse * c.m_cfm - velocity * c.m_jacDiagABInv);
-	const btScalar sum = c.m_appliedImpulse + delta;
-	const btScalar clamped = btMax(c.m_lowerLimit, btMin(c.m_upperLimit, sum));
-	delta = clamped - c.m_appliedImpulse;
-	c.m_appliedImpulse = clamped;
-	if (r.m_fixed != 1) applyToSide(c, true, delta, bodies);
-	if (r.m_fixed != 2) applyToSide(c, false, delta, bodies);
-	if (r.m_fixed)
-	{
-		r.m_withheld += delta;
-		moveFixated(r, delta, btScalar(1), bodies);
-	}
-	// The velocity change of the row (m/s): the impulse over its effective mass.
-	return c.m_jacDiagABInv != btScalar(0) ? btFabs(delta / (r.m_scale * c.m_jacDiagABInv)) : btScalar(0);
-}
-
-int btShockPredictor::sweepLayer(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
-{
-	// Each free body first against its fixated supports alone; a body its supports do not hold
-	// (it slides, tips or lifts) then carries what is welded to it, and the layer is swept again.
-	showRestingSupports(layer, pools.m_bodies, convergedSpeed);
-	int run = sweepRows(layer, pools, sweeps, convergedSpeed, false);
-	if (composites)
-	{
-		formComposites(layer, pools, convergedSpeed);
-		// A body its supports do not hold meets their every motion (measured: the leaning columns
-		// topple later with resting supports shown here too; docs/design.md, section 4.4).
-		showRestingSupports(layer, pools.m_bodies, btScalar(0));
-		if (m_composites.size()) run += sweepRows(layer, pools, sweeps, convergedSpeed, true);
-	}
-	return run;
-}
-
-void btShockPredictor::showRestingSupports(int layer, btAlignedObjectArray<btSolverBody>& bodies, btScalar restSpeed)
-{
-	// A fixated dynamic support whose whole motion along a row is slower than restSpeed (the
-	// convergence speed) is shown to the layer as at rest: that motion is within the tolerance
-	// its own layer was solved to, so it is that solve's error, not motion. Handed up, it grows:
-	// a box fitted to two supports whose rows move unequally turns, and the box above it turns
-	// further (the 2-D pyramids' first up-and-down cycle from rest left 3.3e-7, 2.3e-5 and
-	// 1.8e-4 m/s of row error at bases 40, 60 and 80 in float, and each later cycle handed it up
-	// again until base 60 moved at 0.08 s; docs/design.md, section 4.4). Only the predictor's target
-	// changes: the impulses still act on both bodies, and the corrector's sweeps see every
-	// motion. A restSpeed of 0 shows every motion.
-	const int begin = m_layerStart[layer], end = m_layerStart[layer + 1];
-	for (int i = begin; i < end; ++i) m_rows[i].m_restTarget = 0;
-	if (!(restSpeed > btScalar(0))) return;
-	for (int i = begin; i < end; ++i)
-	{
-		Row& r = m_rows[i];
-		if (!r.m_fixed) continue;
-		const btSolverConstraint& c = *r.m_row;
-		const bool sideA = r.m_fixed == 1;
-		btSolverBody& support = bodies[sideA ? c.m_solverBodyIdA : c.m_solverBodyIdB];
-		if (!(support.internalGetInvMass().length2() > btScalar(0))) continue;
-		const btScalar motion = (sideA ? c.m_contactNormal1 : c.m_contactNormal2).dot(wholeLinear(support)) +
-								(sideA ? c.m_relpos1CrossNormal : c.m_relpos2CrossNormal).dot(wholeAngular(support));
-		if (btFabs(motion) < restSpeed) r.m_restTarget = motion * c.m_jacDiagABInv;
-	}
-}
-
-int btShockPredictor::sweepRows(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed, bool composites)
-{
-	const int begin = m_layerStart[layer];
-	const int end = m_layerStart[layer + 1];
-	if (begin == end) return 0;
-	int run = 0;
-	btAlignedObjectArray<btSolverBody>& bodies = pools.m_bodies;
-	m_sweepLinear.resize(bodies.size());
-	m_sweepAngular.resize(bodies.size());
-	m_sweepDiffLinear.resize(bodies.size());
-	m_sweepDiffAngular.resize(bodies.size());
-	m_diffAt.resize(bodies.size());
-	const bool anyComposite = composites && m_composites.size() > 0;
-	if (!anyComposite) m_composites.resize(0);
-	solveBlocks(layer, pools);
-	// A row is swept while one of its bodies moved in the last sweep: a row whose bodies kept
-	// their velocities would not change. A sweep's change marks only the sides it may move (the
-	// free side; both sides of a row solved with both bodies free), so a fixated support that no
-	// row of the layer moves does not wake the other bodies it carries. A welded composite couples
-	// its members' rows, so a layer with composites sweeps all of them.
-	const bool perBody = !anyComposite;
-	m_movedAt.resize(bodies.size());
-	m_rowActive.resize(end - begin);
-	if (m_stamp > 0xffffffffu - unsigned(sweeps) - 2u)
-	{
-		// Before the stamps wrap (after about 4e9 sweeps), no body has moved or been recorded.
-		for (int i = 0; i < m_movedAt.size(); ++i) m_movedAt[i] = m_diffAt[i] = 0;
-		m_stamp = 0;
-	}
-	++m_stamp;
-	// Each body's velocity as the first sweep begins. Only the layer's rows change a velocity
-	// during the visit, so a body's velocity as a sweep begins is the one recorded when its
-	// change over the last sweep that touched it was formed (below), or this one.
-	for (int i = begin; i < end; ++i)
-	{
-		const btSolverConstraint& c = *m_rows[i].m_row;
-		m_movedAt[c.m_solverBodyIdA] = m_movedAt[c.m_solverBodyIdB] = m_stamp;
-		const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
-		for (int e = 0; e < 2; ++e)
-		{
-			m_sweepLinear[ends[e]] = bodies[ends[e]].internalGetDeltaLinearVelocity();
-			m_sweepAngular[ends[e]] = bodies[ends[e]].internalGetDeltaAngularVelocity();
-		}
-	}
-	for (int s = 0; s < sweeps; ++s)
-	{
-		for (int i = 0; i < m_composites.size() && anyComposite; ++i)
-		{
-			m_composites[i].m_sweepDv = m_composites[i].m_dv;
-			m_composites[i].m_sweepDw = m_composites[i].m_dw;
-		}
-		const unsigned moved = m_stamp++;
-		// Converged once a whole sweep moves no row's bodies by more than convergedSpeed (m/s)
-		// along the row: a sweep whose row updates only shift load among a body's supports
-		// (statically indeterminate) changes no velocity and ends the layer.
-		for (int i = begin; i < end; ++i)
-		{
-			Row& r = m_rows[i];
-			const btSolverConstraint& c = *r.m_row;
-			const bool active = !perBody || m_movedAt[c.m_solverBodyIdA] == moved || m_movedAt[c.m_solverBodyIdB] == moved;
-			m_rowActive[i - begin] = active;
-			if (!active) continue;
-			if (anyComposite && r.m_free >= 0 && m_compositeOf[r.m_free] >= 0)
-				solveCompositeRow(r, m_composites[m_compositeOf[r.m_free]], bodies);
-			else
-				solveRow(r, bodies);
-		}
-		++run;
-		btScalar largest = anyComposite ? compositeMotion(layer, bodies) : btScalar(0);
-		for (int i = begin; i < end; ++i)
-		{
-			if (!m_rowActive[i - begin]) continue;
-			const Row& r = m_rows[i];
-			const btSolverConstraint& c = *r.m_row;
-			// Each body's velocity change over the sweep, formed once; its velocity now is the
-			// next sweep's start.
-			const int ends[2] = {c.m_solverBodyIdA, c.m_solverBodyIdB};
-			for (int e = 0; e < 2; ++e)
-			{
-				if (m_diffAt[ends[e]] == moved) continue;
-				m_diffAt[ends[e]] = moved;
-				const btVector3& linear = bodies[ends[e]].internalGetDeltaLinearVelocity();
-				const btVector3& angular = bodies[ends[e]].internalGetDeltaAngularVelocity();
-				m_sweepDiffLinear[ends[e]] = linear - m_sweepLinear[ends[e]];
-				m_sweepDiffAngular[ends[e]] = angular - m_sweepAngular[ends[e]];
-				m_sweepLinear[ends[e]] = linear;
-				m_sweepAngular[ends[e]] = angular;
-			}
-			const btScalar change = rowVelocity(c, m_sweepDiffLinear[ends[0]], m_sweepDiffAngular[ends[0]], m_sweepDiffLinear[ends[1]], m_sweepDiffAngular[ends[1]]);
-			largest = btMax(largest, btFabs(change));
-			if (btFabs(change) > m_visitSpeed)
-			{
-				const bool mobile = mobileFixated(r);
-				if (r.m_fixed != 1 || mobile) m_movedAt[c.m_solverBodyIdA] = m_stamp;
-				if (r.m_fixed != 2 || mobile) m_movedAt[c.m_solverBodyIdB] = m_stamp;
-			}
-		}
-		if (!(largest > m_visitSpeed)) break;
-		if (cannotConverge(m_sweepChange, s, largest, m_visitSpeed, sweeps)) break;
-	}
-	if (anyComposite) finishComposites(layer, pools, sweeps, convergedSpeed);
-	return run;
-}
-
-bool btShockPredictor::cannotConverge(btAlignedObjectArray<btScalar>& changes, int sweep, btScalar largest, btScalar convergedSpeed, int sweeps)
-{
-	// Sweeps that cannot reach the convergence speed within their budget end now. Every second
-	// sweep from the eighth, the largest change of the last quarter of the sweeps run over that
-	// of the quarter before is their rate per quarter (a quarter's largest, not one sweep's: a
-	// sweep's change is not monotone while rows reach and leave their bounds); at that rate they
-	// need log(converged / largest) / log(rate) quarters more. A solve without a solution keeps
-	// its rate at 1 and ends at 8 sweeps: a free body wedged between fixated ones whose
-	// velocities close on it (no velocity of it holds both rows; its impulses grow by the same
-	// amount each sweep), as in a pile. Checked only as the count doubled (8, 16, 32, ...), a
-	// visit that would end at 128 ran 64 sweeps past the check at 64 that could have ended it:
-	// the pit cost 27.7 times stock, checked every second sweep 14.8 (docs/design.md, section 4.4).
-	changes.resize(sweep + 1);
-	changes[sweep] = largest;
-	const int done = sweep + 1;
-	if (done < 8 || done % 2 != 0) return false;
-	const int quarter = done / 4;
-	btScalar before = 0, last = 0;
-	for (int j = done - 2 * quarter; j < done - quarter; ++j) before = btMax(before, changes[j]);
-	for (int j = done - quarter; j < done; ++j) last = btMax(last, changes[j]);
-	const btScalar rate = last / before;
-	if (!(rate < btScalar(1))) return true;
-	const btScalar needed = quarter * btLog(convergedSpeed / largest) / btLog(rate);
-	return done + needed > sweeps;
-}
-
 bool btShockPredictor::reachable(btScalar r, btScalar last, btScalar convergedSpeed, int cyclesLeft)
 {
 	// At the rate the last cycle lowered the coupled residual (r / last), can the cycles left
@@ -466,12 +312,15 @@ bool btShockPredictor::reachable(btScalar r, btScalar last, btScalar convergedSp
 	return reach <= convergedSpeed;
 }
 
-btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bodies) const
+btScalar btShockPredictor::residual(const btAlignedObjectArray<btSolverBody>& bodies)
 {
 	btScalar worst = 0;
 	for (int i = 0; i < m_rows.size(); ++i)
 	{
 		const btSolverConstraint& c = *m_rows[i].m_row;
+		// The impulse the next cycle starts from (recordStart): no row changes between a residual
+		// and the next cycle.
+		m_rows[i].m_start = c.m_appliedImpulse;
 		if (c.m_jacDiagABInv == btScalar(0)) continue;
 		const btSolverBody& a = bodies[c.m_solverBodyIdA];
 		const btSolverBody& b = bodies[c.m_solverBodyIdB];

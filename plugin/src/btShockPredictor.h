@@ -166,9 +166,13 @@ private:
 		btScalar m_restTarget;                // impulse-scaled motion of a resting fixated side, hidden in its layer's visit (N s)
 		btScalar m_fixedTerm;                 // J_B W' J_B^T of a mobile fixated side (btFixatedMobility.cpp), else 0
 		int m_free;                           // the free side's solver body, -1 if no side is fixated
+		// The row's solver bodies (m_solverBodyIdA, m_solverBodyIdB), kept here: a sweep's test of a
+		// row that did not move and the fixated side's lookups then read no constraint. The row
+		// keeps its size (64 bytes in float, 88 in double): kind and side fit in a byte.
+		int m_bodyA, m_bodyB;
 		bool m_pastLimit;                     // a one-sided row whose s exceeds maxFixationScale, solved both free
-		int m_kind;
-		int m_fixed;  // 0: none, 1: A, 2: B
+		signed char m_kind;
+		signed char m_fixed;  // 0: none, 1: A, 2: B
 	};
 
 	/// Apply an impulse to one side of a row as Bullet's kernels do (sideA: body A with its
@@ -273,25 +277,51 @@ private:
 		if (impulse != btScalar(0) && mobileFixated(r)) moveMobile(r, impulse * sign, bodies);
 	}
 	void moveMobile(const Row& r, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies) const;
-	bool mobileFixated(const Row& r) const { return r.m_fixed && m_mobile.size() && m_mobile[fixedSide(r)] >= 0; }
-	bool supportFactor(int body, btCholesky6& factor) const;
+	/// Whether the row's fixated side is mobile. Without any mobile body (most steps) m_mobile is
+	/// all -1, so the lookup is skipped.
+	bool mobileFixated(const Row& r) const { return r.m_fixed && m_mobility.size() && m_mobile.size() && m_mobile[fixedSide(r)] >= 0; }
+	/// The factor of the body's one-sided support rows (held in m_spanFactors), 0 where they do not
+	/// span the six directions.
+	const btCholesky6* supportFactor(int body) const;
 	// supportFactor's result per solver body for the step: 0 not yet formed, 1 spans
 	// (m_spanFactors holds the factor), 2 does not. Grounding forms it once a body's support rows
 	// are final (the rows to bodies that are not grounded freed first); a body whose rows it frees
 	// afterwards (not grounded, alone or in its cluster) did not span and spans less.
 	mutable btAlignedObjectArray<char> m_spanState;
 	mutable btAlignedObjectArray<btCholesky6> m_spanFactors;
-	void addSupportRows(int body, btScalar* A, int stride, int offset) const;
-	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB; }
+	// Per solver body: the support rows its span factor holds (its one-sided rows as it was formed).
+	mutable btAlignedObjectArray<int> m_spanRowCount;
+	mutable btCholesky6 m_spanScratch;  // a body's factor outside the step's arrays
+	// Per solver body: the lower triangle of sum J_r J_r^T over the rows addRow made one-sided with
+	// it free (21 entries, row by row), and how many; supportFactor takes them while none of those
+	// rows has been freed since (a pass over the constraints fewer).
+	btAlignedObjectArray<btScalar> m_supportSums;
+	btAlignedObjectArray<int> m_supportSumRows;
+	int addSupportRows(int body, btScalar* A, int stride, int offset) const;
+	static int fixedSide(const Row& r) { return r.m_fixed == 1 ? r.m_bodyA : r.m_bodyB; }
+	/// updateRow, returning the row's velocity change (m/s).
 	btScalar solveRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
+	/// One projected update of a row (one-sided where a side is fixated); returns its impulse change.
+	btScalar updateRow(Row& row, btAlignedObjectArray<btSolverBody>& bodies);
 	void deliver(int layer, btAlignedObjectArray<btSolverBody>& bodies);
-	/// The coupled residual r of the cycles (m/s); every impulse must have been delivered.
-	btScalar residual(const btAlignedObjectArray<btSolverBody>& bodies) const;
+	/// The coupled residual r of the cycles (m/s); every impulse must have been delivered. Records
+	/// each row's impulse as the start of the next cycle (recordStart) in the same pass.
+	btScalar residual(const btAlignedObjectArray<btSolverBody>& bodies);
 	/// Whether cyclesLeft more cycles, each lowering the residual by r / last, reach convergedSpeed.
 	static bool reachable(btScalar r, btScalar last, btScalar convergedSpeed, int cyclesLeft);
 	void addRow(btSolverConstraint& c, const btSolverConstraint* normal, int kind, int layer, const btAlignedObjectArray<btSolverBody>& bodies,
 				const btAlignedObjectArray<int>& heightOfSolverBody);
 
+	/// A dynamic body's world inertia I (the inverse of its inverse inertia tensor), or 0 where that
+	/// tensor is singular (|det| not above SIMD_EPSILON). The tensor is the step's, so the inverse
+	/// is formed once per body and step (the support blocks, the line search and the composites each
+	/// asked for it again).
+	const btMatrix3x3* worldInertia(int body, const btRigidBody& rb) const;
+	mutable btAlignedObjectArray<char> m_inertiaState;  // per solver body: 0 not formed, 1 m_inertia holds it, 2 singular
+	mutable btAlignedObjectArray<btMatrix3x3> m_inertia;
+	mutable btMatrix3x3 m_inertiaScratch;
+
+	/// The bodies' velocities before a cycle's passes (the rows' impulses: residual, just before).
 	void recordStart(btAlignedObjectArray<btSolverBody>& bodies);
 	btScalar lineSearch(btAlignedObjectArray<btSolverBody>& bodies);
 
@@ -300,10 +330,17 @@ private:
 	const btAlignedObjectArray<int>* m_componentOfSolverBody = 0;
 	btAlignedObjectArray<btScalar> m_slope, m_curvature, m_alpha;  // line search, per component
 	btAlignedObjectArray<btVector3> m_startLinear, m_startAngular;  // per solver body, before the passes
-	btAlignedObjectArray<btVector3> m_sweepLinear, m_sweepAngular;  // per solver body, before the current sweep
-	btAlignedObjectArray<btVector3> m_sweepDiffLinear, m_sweepDiffAngular;  // per solver body, its change over the sweep
-	btAlignedObjectArray<unsigned> m_diffAt;  // per solver body: the sweep (m_stamp) whose change it holds
-	btAlignedObjectArray<unsigned> m_movedAt;  // per solver body: the last sweep (m_stamp) whose change moved it
+	/// A solver body's record in a layer's sweeps (sweepRows), kept together: a row's test and update
+	/// of its bodies' records then touch one place per body instead of one per array.
+	struct SweepBody
+	{
+		SweepBody() : m_linear(0, 0, 0), m_angular(0, 0, 0), m_diffLinear(0, 0, 0), m_diffAngular(0, 0, 0), m_diffAt(0), m_movedAt(0) {}
+		btVector3 m_linear, m_angular;          // its velocity before the current sweep
+		btVector3 m_diffLinear, m_diffAngular;  // its change over the sweep
+		unsigned m_diffAt;                      // the sweep (m_stamp) whose change it holds
+		unsigned m_movedAt;                     // the last sweep (m_stamp) whose change moved it
+	};
+	btAlignedObjectArray<SweepBody> m_sweepBodies;  // per solver body
 	btAlignedObjectArray<char> m_rowActive;    // per row of the layer being swept: swept in the current sweep
 	unsigned m_stamp = 0;
 	btAlignedObjectArray<btScalar> m_sweepChange;  // per sweep of the current layer: its largest row velocity change (m/s)
@@ -355,6 +392,7 @@ private:
 	/// lies within one support's friction cone (or that support has no friction: mobility's part).
 	bool pushCarried(const Row& r, const btAlignedObjectArray<btSolverBody>& bodies) const;
 	btAlignedObjectArray<int> m_loose;  // groundRows: the layer's free bodies not grounded alone
+	btAlignedObjectArray<const btSolverConstraint*> m_freedContacts;  // groundRows: a body's contact rows freed on both sides
 	btAlignedObjectArray<ClusterNode> m_clusterNodes;
 	btAlignedObjectArray<int> m_clusterRowNext;  // per row
 	btAlignedObjectArray<btScalar> m_clusterMatrix;  // the cluster's 6 n x 6 n normal equations
@@ -362,11 +400,12 @@ private:
 	void solveBlocks(int layer, const Pools& pools);
 	void solveBlock(int body, btAlignedObjectArray<btSolverBody>& bodies);
 	// Each body's block factor for the step (solveBlock): per body 0 none, 1 m_blockFactors holds
-	// it, 2 no factor; per support row slot (m_supportRows), whether the last block held the row.
+	// it, 2 no factor, 3 its span factor (m_spanFactors) is it; per support row slot
+	// (m_supportRows), whether the last block held the row.
 	btAlignedObjectArray<char> m_blockState, m_blockIncluded;
 	btAlignedObjectArray<btCholesky6> m_blockFactors;
+	btCholesky6 m_blockScratch;  // a composite's block factor (not kept)
 	btAlignedObjectArray<int> m_blockRows;
-	btAlignedObjectArray<btScalar> m_blockError;
 	btAlignedObjectArray<const btSolverConstraint*> m_blockContacts;
 	void findWelds(const Pools& pools);
 	void formComposites(int layer, const Pools& pools, btScalar heldSpeed);
@@ -374,7 +413,7 @@ private:
 	btScalar compositeMotion(int layer, const btAlignedObjectArray<btSolverBody>& bodies) const;
 	void finishComposites(int layer, const Pools& pools, int sweeps, btScalar convergedSpeed);
 	void settleWelds(int sweeps, btScalar convergedSpeed, btAlignedObjectArray<btSolverBody>& bodies);
-	bool weldFactor(int body, btCholesky6& factor) const;
+	const btCholesky6* weldFactor(int body) const;
 	void applyToBoth(Row& row, btScalar impulse, btAlignedObjectArray<btSolverBody>& bodies);
 	btAlignedObjectArray<int> m_supportStart, m_supportRows;  // per solver body: the rows where it is the free side
 	btAlignedObjectArray<int> m_layerFreeStart, m_layerFree;  // per layer: its free bodies (bodies with support rows in it)

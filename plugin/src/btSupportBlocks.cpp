@@ -46,20 +46,20 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 	Composite* comp = (m_compositeOf.size() > b && m_compositeOf[b] >= 0) ? &m_composites[m_compositeOf[b]] : 0;
 	const btVector3 offset = comp ? body.getWorldTransform().getOrigin() - comp->m_center : btVector3(0, 0, 0);
 	const btScalar invMass = comp ? comp->m_invMass : rb->getInvMass();
-	const btMatrix3x3 invInertia = comp ? comp->m_invInertia : rb->getInvInertiaTensorWorld();
-	if (!(btFabs(invInertia.determinant()) > SIMD_EPSILON)) return;
+	// The inertia I (the inverse of the inverse inertia): a body's is formed once per step.
+	const btMatrix3x3* inertia = comp ? 0 : worldInertia(b, *rb);
+	if (comp ? !(btFabs(comp->m_invInertia.determinant()) > SIMD_EPSILON) : !inertia) return;
 
 	// The rows that push or would push (and the friction rows of those): their Jacobians on the
 	// body (or composite) and velocity errors. A point Bullet just added starts from no impulse.
 	btScalar g[6] = {};
 	m_blockRows.resize(0);
-	m_blockError.resize(0);
 	m_blockContacts.resize(0);
 	// A body's block matrix depends only on which of its support rows it holds: its factor is kept
 	// for the step and formed again only when that set changes (not for a composite, whose
 	// Jacobians depend on its members).
 	const bool cache = !comp;
-	bool same = cache && m_blockState[b] == 1;
+	bool same = cache && (m_blockState[b] == 1 || m_blockState[b] == 3);
 	for (int k = m_supportStart[b]; k < m_supportStart[b + 1]; ++k)
 	{
 		const int ri = m_supportRows[k];
@@ -92,7 +92,6 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 					const btScalar J[6] = {n.x(), n.y(), n.z(), arm.x(), arm.y(), arm.z()};
 					for (int i = 0; i < 6; ++i) g[i] += J[i] * error;
 					m_blockRows.push_back(ri);
-					m_blockError.push_back(error);
 					included = true;
 				}
 			}
@@ -108,9 +107,19 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 		if (cache) m_blockState[b] = 2;
 		return;
 	}
-	btCholesky6 factor;
+	// The factor is read where it is kept (no copy of it per call). A block holding every one-sided
+	// support row of the body is the matrix its span factor was formed from (supportFactor: the same
+	// Jacobians, summed in the same order; the arm is the row's own cr here, offset.cross(n) adding
+	// only zeros, and the pivots are the same), so a body whose rows span takes that factor.
+	const btCholesky6* factor = 0;
 	if (same)
-		factor = m_blockFactors[b];
+		factor = m_blockState[b] == 3 ? &m_spanFactors[b] : &m_blockFactors[b];
+	else if (cache && m_blockRows.size() == m_supportStart[b + 1] - m_supportStart[b] && b < m_spanState.size() && m_spanState[b] == 1 &&
+			 m_spanRowCount[b] == m_blockRows.size() && btShockPropagationNumerics::blockMinPivot() == spanMinPivot())
+	{
+		factor = &m_spanFactors[b];
+		m_blockState[b] = 3;
+	}
 	else
 	{
 		btScalar A[6][6] = {};
@@ -123,20 +132,19 @@ void btShockPredictor::solveBlock(int b, btAlignedObjectArray<btSolverBody>& bod
 			for (int i = 0; i < 6; ++i)
 				for (int j = 0; j <= i; ++j) A[i][j] += J[i] * J[j];
 		}
-		const bool factored = factor.factor(A, btScalar(0), btShockPropagationNumerics::blockMinPivot(), true);
-		if (cache)
-		{
-			m_blockState[b] = factored ? 1 : 2;
-			if (factored) m_blockFactors[b] = factor;
-		}
+		// Factored in place: factor() writes all that solve() reads (the lower triangle, the scales).
+		btCholesky6& formed = cache ? m_blockFactors[b] : m_blockScratch;
+		const bool factored = formed.factor(A, btScalar(0), btShockPropagationNumerics::blockMinPivot(), true);
+		if (cache) m_blockState[b] = factored ? 1 : 2;
 		if (!factored) return;
+		factor = &formed;
 	}
 	btScalar du[6], y[6];
-	factor.solve(g, du);
+	factor->solve(g, du);
 	const btVector3 dv(du[0], du[1], du[2]), dw(du[3], du[4], du[5]);
-	const btVector3 p = dv / invMass, L = invInertia.inverse() * dw;
+	const btVector3 p = dv / invMass, L = (comp ? comp->m_invInertia.inverse() : *inertia) * dw;
 	const btScalar momentum[6] = {p.x(), p.y(), p.z(), L.x(), L.y(), L.z()};
-	factor.solve(momentum, y);
+	factor->solve(momentum, y);
 	const btVector3 yl(y[0], y[1], y[2]), ya(y[3], y[4], y[5]);
 
 	// Projected: normals first (they bound the friction rows), then friction.

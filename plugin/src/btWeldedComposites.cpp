@@ -59,7 +59,7 @@ void btShockPredictor::applyToBoth(Row& r, btScalar impulse, btAlignedObjectArra
 	applyToSide(*r.m_row, false, impulse, bodies);
 }
 
-bool btShockPredictor::weldFactor(int body, btCholesky6& factor) const
+const btCholesky6* btShockPredictor::weldFactor(int body) const
 {
 	// A pair in contact (one point pushing) whose points span the six directions
 	// (supportFactor). Which of its points push is the load's business (a resting box may carry
@@ -72,7 +72,7 @@ bool btShockPredictor::weldFactor(int body, btCholesky6& factor) const
 		++points;
 		if (r.m_row->m_appliedImpulse > btScalar(0)) ++pushing;
 	}
-	return pushing >= 1 && points >= 3 && supportFactor(body, factor);
+	return pushing >= 1 && points >= 3 ? supportFactor(body) : 0;
 }
 
 void btShockPredictor::findWelds(const Pools& pools)
@@ -94,13 +94,12 @@ void btShockPredictor::findWelds(const Pools& pools)
 		for (int k = begin; k < end && single; ++k)
 		{
 			const Row& r = m_rows[m_supportRows[k]];
-			const int other = r.m_fixed == 1 ? r.m_row->m_solverBodyIdA : r.m_row->m_solverBodyIdB;
+			const int other = r.m_fixed == 1 ? r.m_bodyA : r.m_bodyB;
 			if (parent < 0) parent = other;
 			single = other == parent;
 		}
 		if (!single || parent < 0 || !bodies[parent].m_originalBody || !unitFactors(bodies[parent])) continue;
-		btCholesky6 factor;
-		if (weldFactor(i, factor)) m_parent[i] = parent;
+		if (weldFactor(i)) m_parent[i] = parent;
 	}
 	// Children of each body.
 	m_childStart.resize(numBodies + 1);
@@ -140,7 +139,7 @@ void btShockPredictor::formComposites(int layer, const Pools& pools, btScalar he
 			const btScalar m = btScalar(1) / rb->getInvMass();
 			mass += m;
 			center += bodies[m_members[k]].getWorldTransform().getOrigin() * m;
-			ok = ok && btFabs(rb->getInvInertiaTensorWorld().determinant()) > SIMD_EPSILON;
+			ok = ok && worldInertia(m_members[k], *rb) != 0;
 		}
 		if (!ok || !(mass > btScalar(0)))
 		{
@@ -154,7 +153,7 @@ void btShockPredictor::formComposites(int layer, const Pools& pools, btScalar he
 			const btRigidBody* rb = bodies[m_members[k]].m_originalBody;
 			const btScalar m = btScalar(1) / rb->getInvMass();
 			const btVector3 d = bodies[m_members[k]].getWorldTransform().getOrigin() - center;
-			const btMatrix3x3 own = rb->getInvInertiaTensorWorld().inverse();
+			const btMatrix3x3& own = *worldInertia(m_members[k], *rb);
 			const btScalar d2 = d.length2();
 			for (int a = 0; a < 3; ++a)
 				for (int b = 0; b < 3; ++b) inertia[a][b] += own[a][b] + m * ((a == b ? d2 : btScalar(0)) - d[a] * d[b]);
@@ -170,7 +169,7 @@ void btShockPredictor::formComposites(int layer, const Pools& pools, btScalar he
 			const btRigidBody* rb = body.m_originalBody;
 			const btVector3 p = wholeLinear(body) / rb->getInvMass();
 			momentum += p;
-			spin += rb->getInvInertiaTensorWorld().inverse() * wholeAngular(body) + (body.getWorldTransform().getOrigin() - center).cross(p);
+			spin += *worldInertia(m_members[k], *rb) * wholeAngular(body) + (body.getWorldTransform().getOrigin() - center).cross(p);
 		}
 		comp.m_v0 = momentum * comp.m_invMass;
 		comp.m_w0 = comp.m_invInertia * spin;
@@ -253,7 +252,8 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools, int sweep
 			const btRigidBody* rb = body.m_originalBody;
 			const btVector3 x = body.getWorldTransform().getOrigin();
 			btVector3 force = (v + w.cross(x - comp.m_center) - wholeLinear(body)) / rb->getInvMass();
-			btVector3 moment = rb->getInvInertiaTensorWorld().inverse() * (w - wholeAngular(body));
+			// Every member's inverse inertia is regular (formComposites).
+			btVector3 moment = *worldInertia(m, *rb) * (w - wholeAngular(body));
 			for (int j = m_childStart[m]; j < m_childStart[m + 1]; ++j)
 			{
 				const int child = m_children[j];
@@ -267,11 +267,11 @@ void btShockPredictor::finishComposites(int layer, const Pools& pools, int sweep
 		{
 			const int m = m_members[k];
 			// Least-norm impulses of the weld rows with that force and moment on m.
-			btCholesky6 factor;
-			if (!weldFactor(m, factor)) continue;
+			const btCholesky6* factor = weldFactor(m);
+			if (!factor) continue;
 			const btScalar wrench[6] = {m_weldForce[m].x(), m_weldForce[m].y(), m_weldForce[m].z(), m_weldMoment[m].x(), m_weldMoment[m].y(), m_weldMoment[m].z()};
 			btScalar y[6];
-			factor.solve(wrench, y);
+			factor->solve(wrench, y);
 			const btVector3 yl(y[0], y[1], y[2]), ya(y[3], y[4], y[5]);
 			for (int s = m_supportStart[m]; s < m_supportStart[m + 1]; ++s)
 			{
