@@ -31,7 +31,7 @@ double blockDeviation(const harness::SolverSpec& spec, double seconds)
 // spread (measured, float, 2 s: 2.53 m). The plugin holds it (measured: world 0.25 cm and
 // solver-only 0.25 cm at 2 s). Asserted: the plugin within 2 cm (a tenth of a cube), stock beyond
 // 20 cm (the scene is one stock gets wrong). Cost is a benchmark's business
-// (bsp_bench --ratios: 17-19x stock per step, docs/design.md section 12).
+// (bsp_bench --ratios: 5.6x stock per step, docs/design.md section 12).
 TEST(ExamplePort, BasicDemoBlockLandsAndStaysABlock)
 {
 	const double seconds = 2.0;
