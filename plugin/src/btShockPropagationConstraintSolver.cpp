@@ -139,10 +139,97 @@ btScalar btShockPropagationConstraintSolver::solveGroup(btCollisionObject** bodi
 		m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
 		return btScalar(0);
 	}
+	if (!m_settings.m_diagnostics.m_layerFlatGroups && splitOffFlatComponents())
+	{
+		// Bullet batches small islands into one call: the components without stacks are Bullet's
+		// own solve, as a group of them alone is (D9), and the stacked rest is solved as below.
+		// Components share no body and no row, so each gets the result it would get alone.
+		clock.reset();
+		m_bodies.copyFromArray(m_flatBodies);
+		m_manifolds.copyFromArray(m_flatManifolds);
+		m_constraints.copyFromArray(m_flatConstraints);
+		solveFlat(info, debugDrawer);
+		m_bodies.copyFromArray(m_stackedBodies);
+		m_manifolds.copyFromArray(m_stackedManifolds);
+		m_constraints.copyFromArray(m_stackedConstraints);
+		m_stats.m_timeGlobalDynamicsMs += millisecondsSince(clock);
+		clock.reset();
+		buildGraph();
+		m_stats.m_timeGraphMs += millisecondsSince(clock);
+	}
 	m_stats.m_numLayeredGroups += 1;
 	m_stats.m_numFixatedBodies += m_layers.getTotalFixated();
 	solveConverging(info, debugDrawer);
 	return btScalar(0);
+}
+
+bool btShockPropagationConstraintSolver::splitOffFlatComponents()
+{
+	// A component is stacked if a body of it stands at height 2 or more (one stack layer is
+	// flat). Components joined by a joint (joints are no graph edges, D8) or by a manifold without
+	// an edge (points beyond the processing threshold, which Bullet's setup still takes the bodies
+	// of) are solved together, stacked if either is: a lamp hung from a tower is the tower's. Else
+	// one part's solve would write the other part's body too, and gravity would reach it twice.
+	const int numComponents = m_layers.getNumComponents();
+	btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
+	tallest.resize(numComponents);
+	for (int c = 0; c < numComponents; ++c) tallest[c] = 0;
+	for (int i = 0; i < m_bodies.size(); ++i)
+	{
+		const int c = m_layers.getComponent(i);
+		if (c >= 0) tallest[c] = btMax(tallest[c], m_layers.getHeight(i));
+	}
+	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
+	for (bool changed = true; changed;)
+	{
+		changed = false;
+		for (int i = 0; i < m_constraints.size() + m_manifolds.size(); ++i)
+		{
+			const bool joint = i < m_constraints.size();
+			const btCollisionObject* bodyA = joint ? &m_constraints[i]->getRigidBodyA() : m_manifolds[i - m_constraints.size()]->getBody0();
+			const btCollisionObject* bodyB = joint ? &m_constraints[i]->getRigidBodyB() : m_manifolds[i - m_constraints.size()]->getBody1();
+			const int a = nodeOf(bodyA), b = nodeOf(bodyB);
+			if (a < 0 || b < 0) continue;
+			const int ca = m_layers.getComponent(a), cb = m_layers.getComponent(b);
+			if (ca < 0 || cb < 0 || (tallest[ca] >= 2) == (tallest[cb] >= 2)) continue;
+			tallest[ca] = tallest[cb] = 2;
+			changed = true;
+		}
+	}
+	// A body's, manifold's or joint's part: that of its dynamic node (none: the stacked part).
+	m_flatBodies.resize(0);
+	m_flatManifolds.resize(0);
+	m_flatConstraints.resize(0);
+	m_stackedBodies.resize(0);
+	m_stackedManifolds.resize(0);
+	m_stackedConstraints.resize(0);
+	for (int i = 0; i < m_bodies.size(); ++i)
+	{
+		const int c = m_layers.getComponent(i);
+		if (c >= 0 && tallest[c] < 2) m_flatBodies.push_back(m_bodies[i]);
+		else m_stackedBodies.push_back(m_bodies[i]);
+	}
+	for (int i = 0; i < m_manifolds.size(); ++i)
+	{
+		// By its bodies, not its graph edge: a manifold without an edge (its points beyond the
+		// processing threshold) still gives Bullet's setup its bodies, whose velocities the
+		// finish then writes again.
+		const int a = nodeOf(m_manifolds[i]->getBody0());
+		const int node = a >= 0 ? a : nodeOf(m_manifolds[i]->getBody1());
+		const int c = node >= 0 ? m_layers.getComponent(node) : -1;
+		if (c >= 0 && tallest[c] < 2) m_flatManifolds.push_back(m_manifolds[i]);
+		else m_stackedManifolds.push_back(m_manifolds[i]);
+	}
+	for (int i = 0; i < m_constraints.size(); ++i)
+	{
+		const int a = nodeOf(&m_constraints[i]->getRigidBodyA());
+		const int node = a >= 0 ? a : nodeOf(&m_constraints[i]->getRigidBodyB());
+		const int c = node >= 0 ? m_layers.getComponent(node) : -1;
+		if (c >= 0 && tallest[c] < 2) m_flatConstraints.push_back(m_constraints[i]);
+		else m_stackedConstraints.push_back(m_constraints[i]);
+	}
+	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
+	return m_flatBodies.size() > 0 && m_stackedBodies.size() > 0;
 }
 
 void btShockPropagationConstraintSolver::assignRowsToLayers()

@@ -119,6 +119,9 @@ private:
 	void buildGraph();
 	// A group without stacks: Bullet's own solve, warm started from its own impulses.
 	void solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
+	/// In a group with stacks, splits the components without stacks (and what joints tie to
+	/// them) off into m_flat*, the rest into m_stacked*; false if either part is empty.
+	bool splitOffFlatComponents();
 	void startFromOwnImpulses();
 	void markPointsFelt();
 	// The converging step of a group that holds a stack, its stages in order (docs/design.md, section 2).
@@ -154,6 +157,10 @@ private:
 	btAlignedObjectArray<int> m_solverBodyOfNode;
 	btAlignedObjectArray<int> m_tallestOfComponent;  // second correction: tallest height per component
 	btAlignedObjectArray<int> m_keptEdges;
+	// A group's parts without and with stacks (splitOffFlatComponents; capacity kept across steps).
+	btAlignedObjectArray<btCollisionObject*> m_flatBodies, m_stackedBodies;
+	btAlignedObjectArray<btPersistentManifold*> m_flatManifolds, m_stackedManifolds;
+	btAlignedObjectArray<btTypedConstraint*> m_flatConstraints, m_stackedConstraints;
 	btContactGraph m_graph;
 	btStackLayers m_layers;
 	btPositionCorrection* m_correction;
