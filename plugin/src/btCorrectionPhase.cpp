@@ -105,11 +105,7 @@ bool btShockPropagationConstraintSolver::correctAfterStep(btCollisionObject** ob
 	bool moved = false;
 	if (anyStack)
 	{
-		btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
-		tallest.resize(m_layers.getNumComponents());
-		for (int c = 0; c < tallest.size(); ++c) tallest[c] = 0;
-		for (int i = 0; i < m_bodies.size(); ++i)
-			tallest[m_layers.getComponent(i)] = btMax(tallest[m_layers.getComponent(i)], m_layers.getHeight(i));
+		const btAlignedObjectArray<int>& tallest = tallestOfComponents();
 		int keptManifolds = 0;
 		btAlignedObjectArray<int>& keptEdges = m_keptEdges;
 		keptEdges.resize(0);

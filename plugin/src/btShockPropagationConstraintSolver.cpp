@@ -170,15 +170,9 @@ bool btShockPropagationConstraintSolver::splitOffFlatComponents()
 	// an edge (points beyond the processing threshold, which Bullet's setup still takes the bodies
 	// of) are solved together, stacked if either is: a lamp hung from a tower is the tower's. Else
 	// one part's solve would write the other part's body too, and gravity would reach it twice.
-	const int numComponents = m_layers.getNumComponents();
-	btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
-	tallest.resize(numComponents);
-	for (int c = 0; c < numComponents; ++c) tallest[c] = 0;
-	for (int i = 0; i < m_bodies.size(); ++i)
-	{
-		const int c = m_layers.getComponent(i);
-		if (c >= 0) tallest[c] = btMax(tallest[c], m_layers.getHeight(i));
-	}
+	btAlignedObjectArray<int>& tallest = tallestOfComponents();
+	// Flat: the node's component has no body at height 2 (no node, a static pair: stacked part).
+	auto flat = [&](int node) { return node >= 0 && m_layers.getComponent(node) >= 0 && tallest[m_layers.getComponent(node)] < 2; };
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	for (bool changed = true; changed;)
 	{
@@ -189,47 +183,45 @@ bool btShockPropagationConstraintSolver::splitOffFlatComponents()
 			const btCollisionObject* bodyA = joint ? &m_constraints[i]->getRigidBodyA() : m_manifolds[i - m_constraints.size()]->getBody0();
 			const btCollisionObject* bodyB = joint ? &m_constraints[i]->getRigidBodyB() : m_manifolds[i - m_constraints.size()]->getBody1();
 			const int a = nodeOf(bodyA), b = nodeOf(bodyB);
-			if (a < 0 || b < 0) continue;
-			const int ca = m_layers.getComponent(a), cb = m_layers.getComponent(b);
-			if (ca < 0 || cb < 0 || (tallest[ca] >= 2) == (tallest[cb] >= 2)) continue;
-			tallest[ca] = tallest[cb] = 2;
+			if (a < 0 || b < 0 || m_layers.getComponent(a) < 0 || m_layers.getComponent(b) < 0 || flat(a) == flat(b)) continue;
+			tallest[m_layers.getComponent(a)] = tallest[m_layers.getComponent(b)] = 2;
 			changed = true;
 		}
 	}
-	// A body's, manifold's or joint's part: that of its dynamic node (none: the stacked part).
+	// A body's, manifold's or joint's part: that of its (first) dynamic node. A manifold goes by
+	// its bodies, not its graph edge: one without an edge still gives Bullet's setup its bodies.
 	m_flatBodies.resize(0);
 	m_flatManifolds.resize(0);
 	m_flatConstraints.resize(0);
 	m_stackedBodies.resize(0);
 	m_stackedManifolds.resize(0);
 	m_stackedConstraints.resize(0);
-	for (int i = 0; i < m_bodies.size(); ++i)
-	{
-		const int c = m_layers.getComponent(i);
-		if (c >= 0 && tallest[c] < 2) m_flatBodies.push_back(m_bodies[i]);
-		else m_stackedBodies.push_back(m_bodies[i]);
-	}
+	for (int i = 0; i < m_bodies.size(); ++i) (flat(i) ? m_flatBodies : m_stackedBodies).push_back(m_bodies[i]);
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{
-		// By its bodies, not its graph edge: a manifold without an edge (its points beyond the
-		// processing threshold) still gives Bullet's setup its bodies, whose velocities the
-		// finish then writes again.
 		const int a = nodeOf(m_manifolds[i]->getBody0());
-		const int node = a >= 0 ? a : nodeOf(m_manifolds[i]->getBody1());
-		const int c = node >= 0 ? m_layers.getComponent(node) : -1;
-		if (c >= 0 && tallest[c] < 2) m_flatManifolds.push_back(m_manifolds[i]);
-		else m_stackedManifolds.push_back(m_manifolds[i]);
+		(flat(a >= 0 ? a : nodeOf(m_manifolds[i]->getBody1())) ? m_flatManifolds : m_stackedManifolds).push_back(m_manifolds[i]);
 	}
 	for (int i = 0; i < m_constraints.size(); ++i)
 	{
 		const int a = nodeOf(&m_constraints[i]->getRigidBodyA());
-		const int node = a >= 0 ? a : nodeOf(&m_constraints[i]->getRigidBodyB());
-		const int c = node >= 0 ? m_layers.getComponent(node) : -1;
-		if (c >= 0 && tallest[c] < 2) m_flatConstraints.push_back(m_constraints[i]);
-		else m_stackedConstraints.push_back(m_constraints[i]);
+		(flat(a >= 0 ? a : nodeOf(&m_constraints[i]->getRigidBodyB())) ? m_flatConstraints : m_stackedConstraints).push_back(m_constraints[i]);
 	}
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(-1);
 	return m_flatBodies.size() > 0 && m_stackedBodies.size() > 0;
+}
+
+btAlignedObjectArray<int>& btShockPropagationConstraintSolver::tallestOfComponents()
+{
+	btAlignedObjectArray<int>& tallest = m_tallestOfComponent;
+	tallest.resize(m_layers.getNumComponents());
+	for (int c = 0; c < tallest.size(); ++c) tallest[c] = 0;
+	for (int i = 0; i < m_bodies.size(); ++i)
+	{
+		const int c = m_layers.getComponent(i);
+		if (c >= 0) tallest[c] = btMax(tallest[c], m_layers.getHeight(i));
+	}
+	return tallest;
 }
 
 void btShockPropagationConstraintSolver::assignRowsToLayers()

@@ -119,9 +119,12 @@ private:
 	void buildGraph();
 	// A group without stacks: Bullet's own solve, warm started from its own impulses.
 	void solveFlat(const btContactSolverInfo& info, btIDebugDraw* debugDrawer);
-	/// In a group with stacks, splits the components without stacks (and what joints tie to
-	/// them) off into m_flat*, the rest into m_stacked*; false if either part is empty.
+	/// In a group with stacks, splits the components without stacks off into m_flat*, the rest
+	/// into m_stacked* (a flat component that a joint or an edgeless manifold ties to a stacked
+	/// one counts as stacked); false if either part is empty.
 	bool splitOffFlatComponents();
+	/// The tallest body height of each contact-graph component of m_bodies (m_tallestOfComponent).
+	btAlignedObjectArray<int>& tallestOfComponents();
 	void startFromOwnImpulses();
 	void markPointsFelt();
 	// The converging step of a group that holds a stack, its stages in order (docs/design.md, section 2).
@@ -155,7 +158,7 @@ private:
 	btAlignedObjectArray<int> m_edgeOfManifold;    // graph edge of each manifold, -1 if none
 	btAlignedObjectArray<int> m_contactRowLayer;
 	btAlignedObjectArray<int> m_solverBodyOfNode;
-	btAlignedObjectArray<int> m_tallestOfComponent;  // second correction: tallest height per component
+	btAlignedObjectArray<int> m_tallestOfComponent;  // tallest height per component (tallestOfComponents)
 	btAlignedObjectArray<int> m_keptEdges;
 	// A group's parts without and with stacks (splitOffFlatComponents; capacity kept across steps).
 	btAlignedObjectArray<btCollisionObject*> m_flatBodies, m_stackedBodies;
