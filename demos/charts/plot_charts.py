@@ -19,13 +19,14 @@ import matplotlib.pyplot as plt  # noqa: E402
 # Statuses of a configuration that ran the full 10 s and did what the scene asks (a seesaw's "did not
 # tip" counts as stopped: statics says it must tip).
 FINISHED = ("standing", "moved", "tipped")
-STOCK = ["si", "si2f", "si-sub2", "si-sub4", "nncg", "mlcp"]
+STOCK = ["si", "si2f", "si-sub2", "si-sub4", "si-sub8", "nncg", "mlcp"]
 # One style per solver variant: colour, marker. Plugin variants share a red ramp and a marker shape family.
 STYLE = {
     "si": ("#1f77b4", "o"),
     "si2f": ("#17becf", "s"),
     "si-sub2": ("#2ca02c", "^"),
     "si-sub4": ("#006400", "v"),
+    "si-sub8": ("#00441b", "<"),
     "nncg": ("#9467bd", "D"),
     "mlcp": ("#7f7f7f", "P"),
     "sp f=0": ("#fdae61", "p"),

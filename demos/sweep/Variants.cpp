@@ -25,6 +25,7 @@ std::vector<Variant> sweepVariants()
 		variant("si2f", "si2f"),
 		variant("si-sub2", "si-sub2"),
 		variant("si-sub4", "si-sub4"),
+		variant("si-sub8", "si-sub8"),
 		variant("nncg", "nncg"),
 		variant("mlcp", "mlcp"),
 		variant("sp f=0", "sp", 0.0),
