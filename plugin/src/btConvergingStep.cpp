@@ -41,7 +41,7 @@ subject to the following restrictions:
 #include "btBoxFaceCorners.h"
 #include "btContactPatch.h"
 #include "btShockPredictor.h"
-#include "btWithheldReactions.h"
+#include "btFeltShares.h"
 
 #include <cmath>
 
@@ -175,6 +175,6 @@ void btShockPropagationConstraintSolver::markPointsSolved()
 		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
-			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse == btScalar(0) ? btScalar(1) : btScalar(0));
+			btFeltShares::setFeltShare(cp, cp.m_appliedImpulse == btScalar(0) ? btScalar(1) : btScalar(0));
 		}
 }

@@ -24,7 +24,7 @@ subject to the following restrictions:
 #include "btBodyChecks.h"
 #include "btBoxFaceCorners.h"
 #include "btShockPredictor.h"
-#include "btWithheldReactions.h"
+#include "btFeltShares.h"
 #include "btPositionCorrection.h"
 
 #include <cmath>
@@ -289,7 +289,7 @@ void btShockPropagationConstraintSolver::startFromOwnImpulses()
 		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
-			if (btWithheldReactions::feltShare(cp) == cp.m_appliedImpulse) continue;
+			if (btFeltShares::feltShare(cp) == cp.m_appliedImpulse) continue;
 			cp.m_appliedImpulse = cp.m_appliedImpulseLateral1 = cp.m_appliedImpulseLateral2 = 0;
 		}
 }
@@ -301,6 +301,6 @@ void btShockPropagationConstraintSolver::markPointsFelt()
 		for (int j = 0; j < m_manifolds[i]->getNumContacts(); ++j)
 		{
 			btManifoldPoint& cp = m_manifolds[i]->getContactPoint(j);
-			btWithheldReactions::setFeltShare(cp, cp.m_appliedImpulse);
+			btFeltShares::setFeltShare(cp, cp.m_appliedImpulse);
 		}
 }

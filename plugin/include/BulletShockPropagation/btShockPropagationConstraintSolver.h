@@ -32,21 +32,27 @@ class btShockPropagationDynamicsWorld;
 /// btConstraintSolver. It reuses Bullet's rows (btSequentialImpulseConstraintSolver's setup, row
 /// kernels and finish) and adds the contact graph, the stack layers and per-layer fixation.
 ///
-/// One solveGroup call, for the bodies, manifolds and joints Bullet hands over (docs/design.md):
+/// One solveGroup call, for the bodies, manifolds and joints Bullet hands over (docs/design.md,
+/// section 2):
 ///   1. contact graph and stack layers (btContactGraph, btStackLayers);
-///   2. no stacks (one layer): Bullet's own solveGroup, with the app's settings, unchanged;
-///   3. else Bullet's rows are set up once for the step's dt (restitution, speculative contacts,
-///      joint rows, motors, warm starting exactly as a stock step sets them up; D15), and swept
-///      by a schedule of passes over subsets of them (btLayeredPasses):
-///        global pass   ceil(f N) sweeps over all rows, every body free;
-///        layer passes  for k = 0 .. K-1 (bottom-up): N sweeps over layer k's rows with its lower
-///                      bodies fixated (infinite mass, full rigid motion kept; D1);
-///        weight pass   (weight feeling only, D13) top-down: each layer's free bodies receive the
-///                      reactions fixation withheld from them, and the layer is re-solved;
-///      then finished once (applied impulses, joint feedback, breaking, velocities), and the
-///      positions are corrected layer by layer at the depths of CD(t) (btPositionCorrection, D6).
+///   2. components without stacks (one layer): Bullet's own solveGroup, with the app's settings;
+///   3. components with stacks: the converging step, its stages called in order:
+///        setupRows          Bullet's rows, set up once for the step's dt as a stock step sets them
+///                           up (restitution, joint rows, motors), two friction rows per point,
+///                           every row from zero impulse, each contact row given its layer;
+///        predictVelocities  shock propagation: up-and-down cycles of a pass up the layers with
+///                           each layer's lower bodies fixated (infinite mass, D1) and a weight-
+///                           feeling pass down, every withheld reaction delivered to both bodies,
+///                           each cycle line searched on kinetic energy;
+///        correctVelocities  Bullet's own sweeps over every row, every body free, from the
+///                           predictor's impulses, ceil(f N) at most, ended once converged;
+///        finishRows         Bullet's finish (applied impulses, joint feedback and breaking);
+///        correctPositions   the positions corrected layer by layer at the depths of CD(t)
+///                           (btPositionCorrection).
 ///      N is the app's btContactSolverInfo::m_numIterations unless the settings fix the counts.
-/// btShockPropagationDynamicsWorld adds the second correction after the positions advance.
+///      Every impulse acts on both bodies of its row, so momentum and angular momentum change only
+///      through static and kinematic bodies and external forces.
+/// btShockPropagationDynamicsWorld adds the second phase after the positions advance.
 ///
 /// Bad input: a body whose transform or velocity is NaN or Inf is left out of every pass (it
 /// neither moves others nor is moved) with a one-time warning on stderr; manifolds touching it or

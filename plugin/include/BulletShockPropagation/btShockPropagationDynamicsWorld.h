@@ -28,7 +28,7 @@ class btShockPropagationConstraintSolver;
 ///   what runs                                                     Bullet call
 ///   1. collision detection at t, islands                          performDiscreteCollisionDetection,
 ///                                                                 calculateSimulationIslands
-///   2. velocities: global pass, layers bottom-up, weight pass;    solveConstraints (the solver's
+///   2. velocities: the converging step (predictor, corrector),    solveConstraints (the solver's
 ///      position correction at the contacts of 1                   solveGroup)
 ///   3. positions advance with the final velocities                integrateTransforms
 ///   4. collision detection at t + dt: broadphase (new pairs       inside integrateTransforms, after
