@@ -122,8 +122,8 @@ TEST(FreeFall, BodyWithoutContactsIsUntouched)
 TEST(Impulses, AppliedImpulseIsTheStepsTotal)
 {
 	// Two boxes, f = 0.5: the top box rests, so the impulses on it over one step sum to m g dt.
-	// Each row holds one impulse for the whole step (global and layer passes), written back once;
-	// a pass's share alone would be about half of that.
+	// Each row holds one impulse for the whole step (predictor and corrector), written back once;
+	// one stage's share alone would be less than that.
 	harness::Trial run(spec::shock(10, 0.5), "tower", {{"n", 2}});
 	run.run(1.0);
 	const btRigidBody* top = run.named("top");

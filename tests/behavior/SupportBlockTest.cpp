@@ -46,14 +46,14 @@ TEST(SupportBlocks, RoundTowerStandsAt100Iterations)
 
 TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
 {
-	// D21 (docs/history.md, section 4f): the global pass ends once a sweep changes the rows'
-	// velocities by at most the convergence speed in total. A settled, warm-started pyramid of base
+	// D21 (docs/history.md, section 4f), kept by the corrector (docs/design.md, section 5): its
+	// sweeps end once one changes no row's velocity by more than the convergence speed. A settled, warm-started pyramid of base
 	// 10 converges in its first sweep and still stands with the ground carrying its weight; cubes
 	// falling into a pit never converge within ceil(f N) = 5 sweeps, so they run every one.
 	harness::Trial pyramid(spec::shock(), "pyramid", {{"base", 10}});
 	pyramid.run(2.0);
 	const long sweeps = spec::sumOverSteps(pyramid, 60, &btShockPropagationStatistics::m_numGlobalSweeps);
-	EXPECT_LE(double(sweeps) / 60.0, 1.1) << "global sweeps per step";
+	EXPECT_LE(double(sweeps) / 60.0, 1.1) << "corrector sweeps per step";
 	pyramid.run(8.0);
 	EXPECT_LT(pyramid.maxDrift(), harness::kStandingDriftMeters);
 	EXPECT_NEAR(pyramid.summary().groundOverWeightLastSecond, 1.0, 0.05);
@@ -70,7 +70,7 @@ TEST(ConvergedGlobalPass, SettledPyramidStopsAfterOneSweepAFallingPileRunsAll)
 		if (pile.getStatistics().m_numGlobalSweeps >= 5 * pile.getStatistics().m_numLayeredGroups) ++full;
 	}
 	ASSERT_GT(layered, 0);
-	EXPECT_EQ(full, layered) << "steps of a moving pile whose global pass ended early";
+	EXPECT_EQ(full, layered) << "steps of a moving pile whose corrector ended early";
 }
 
 TEST(LayerIterationFloor, BenchmarkDemoThousandStackHoldsAtTheAppsFiveIterations)
