@@ -80,30 +80,53 @@ void btPositionCorrection::addJoint(int nodeA, int nodeB)
 	m_joints.push_back((nodeB >= 0 && m_bodies[nodeB].m_body) ? nodeB : -1);
 }
 
-void btPositionCorrection::sweepPoints(int begin, int end)
+void btPositionCorrection::formTerms()
 {
-	for (int i = begin; i < end; ++i)
+	// Each point's Jacobian terms depend only on its arms, its normal and its bodies' inverse
+	// masses and inertias, none of which a sweep changes: formed once per solve.
+	m_terms.resizeNoInitialize(m_points.size());
+	for (int i = 0; i < m_points.size(); ++i)
 	{
-		Point& p = m_points[m_sorted[i]];
-		const btVector3 crossA = p.m_armA.cross(p.m_normal);
-		const btVector3 crossB = p.m_armB.cross(p.m_normal);
-		// Separation gained so far along the normal: n . (dx_A + dtheta_A x r_A - dx_B - dtheta_B x r_B).
-		btScalar gained = btScalar(0);
-		btScalar termA = btScalar(0), termB = btScalar(0);  // each side's inverse mass along the normal
-		btVector3 angularA(0, 0, 0), angularB(0, 0, 0);
+		const Point& p = m_points[i];
+		Terms& t = m_terms[i];
+		t.m_crossA = p.m_armA.cross(p.m_normal);
+		t.m_crossB = p.m_armB.cross(p.m_normal);
+		t.m_angularA.setZero();
+		t.m_angularB.setZero();
+		t.m_termA = t.m_termB = btScalar(0);
 		if (p.m_bodyA >= 0)
 		{
 			const Body& a = m_bodies[p.m_bodyA];
-			gained += p.m_normal.dot(a.m_shift) + crossA.dot(a.m_turn);
-			angularA = (a.m_invInertia * crossA) * a.m_angularFactor;
-			termA = a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + crossA.dot(angularA);
+			t.m_angularA = (a.m_invInertia * t.m_crossA) * a.m_angularFactor;
+			t.m_termA = a.m_invMass * (p.m_normal * a.m_linearFactor).dot(p.m_normal) + t.m_crossA.dot(t.m_angularA);
 		}
 		if (p.m_bodyB >= 0)
 		{
 			const Body& b = m_bodies[p.m_bodyB];
-			gained -= p.m_normal.dot(b.m_shift) + crossB.dot(b.m_turn);
-			angularB = (b.m_invInertia * crossB) * b.m_angularFactor;
-			termB = b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + crossB.dot(angularB);
+			t.m_angularB = (b.m_invInertia * t.m_crossB) * b.m_angularFactor;
+			t.m_termB = b.m_invMass * (p.m_normal * b.m_linearFactor).dot(p.m_normal) + t.m_crossB.dot(t.m_angularB);
+		}
+	}
+}
+
+bool btPositionCorrection::sweepPoints(int begin, int end)
+{
+	bool changed = false;
+	for (int i = begin; i < end; ++i)
+	{
+		Point& p = m_points[m_sorted[i]];
+		const Terms& t = m_terms[m_sorted[i]];
+		// Separation gained so far along the normal: n . (dx_A + dtheta_A x r_A - dx_B - dtheta_B x r_B).
+		btScalar gained = btScalar(0);
+		if (p.m_bodyA >= 0)
+		{
+			const Body& a = m_bodies[p.m_bodyA];
+			gained += p.m_normal.dot(a.m_shift) + t.m_crossA.dot(a.m_turn);
+		}
+		if (p.m_bodyB >= 0)
+		{
+			const Body& b = m_bodies[p.m_bodyB];
+			gained -= p.m_normal.dot(b.m_shift) + t.m_crossB.dot(b.m_turn);
 		}
 		bool moveA = p.m_bodyA >= 0 && !m_fixated[p.m_bodyA];
 		bool moveB = p.m_bodyB >= 0 && !m_fixated[p.m_bodyB];
@@ -111,33 +134,37 @@ void btPositionCorrection::sweepPoints(int begin, int end)
 		// both bodies move, as the converging step's velocity rows do (btShockPredictor::addRow; a
 		// free side that nothing can move keeps the other fixated there too), so that the positions
 		// do not hold up a body whose velocity the contact does not stop.
-		if (moveA != moveB && p.m_bodyA >= 0 && p.m_bodyB >= 0 && btShockPredictor::fixationScale(moveA ? termA : termB, termA + termB) > m_maxScale)
+		if (moveA != moveB && p.m_bodyA >= 0 && p.m_bodyB >= 0 &&
+			btShockPredictor::fixationScale(moveA ? t.m_termA : t.m_termB, t.m_termA + t.m_termB) > m_maxScale)
 			moveA = moveB = true;
-		const btScalar inverseMass = (moveA ? termA : btScalar(0)) + (moveB ? termB : btScalar(0));
+		const btScalar inverseMass = (moveA ? t.m_termA : btScalar(0)) + (moveB ? t.m_termB : btScalar(0));
 		if (!(inverseMass > SIMD_EPSILON)) continue;
 		btScalar delta = (p.m_target - gained) / inverseMass;
 		const btScalar sum = p.m_lambda + delta;
 		if (sum < btScalar(0)) delta = -p.m_lambda;
 		p.m_lambda += delta;
 		if (delta == btScalar(0)) continue;
+		changed = true;
 		if (moveA)
 		{
 			Body& a = m_bodies[p.m_bodyA];
 			a.m_shift += p.m_normal * a.m_linearFactor * (a.m_invMass * delta);
-			a.m_turn += angularA * delta;
+			a.m_turn += t.m_angularA * delta;
 		}
 		if (moveB)
 		{
 			Body& b = m_bodies[p.m_bodyB];
 			b.m_shift -= p.m_normal * b.m_linearFactor * (b.m_invMass * delta);
-			b.m_turn -= angularB * delta;
+			b.m_turn -= t.m_angularB * delta;
 		}
 	}
+	return changed;
 }
 
 void btPositionCorrection::solve(int sweeps, const btStackLayers* layers, btScalar maxFixationScale)
 {
 	m_maxScale = maxFixationScale;
+	formTerms();
 	const int numLayers = layers ? m_numLayers : 1;
 	// Points by layer (counting sort; order within a layer kept).
 	m_layerStart.resize(numLayers + 1);
@@ -154,7 +181,9 @@ void btPositionCorrection::solve(int sweeps, const btStackLayers* layers, btScal
 		if (begin == end) continue;
 		if (layers && k < layers->getNumLayers())
 			for (int i = 0; i < layers->getNumFixatedBodies(k); ++i) m_fixated[layers->getFixatedBody(k, i)] = 1;
-		for (int s = 0; s < sweeps; ++s) sweepPoints(begin, end);
+		// A sweep that changes no point leaves every body as it was, so each later one would too.
+		for (int s = 0; s < sweeps; ++s)
+			if (!sweepPoints(begin, end)) break;
 		if (layers && k < layers->getNumLayers())
 			for (int i = 0; i < layers->getNumFixatedBodies(k); ++i) m_fixated[layers->getFixatedBody(k, i)] = 0;
 	}

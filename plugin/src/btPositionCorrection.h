@@ -84,7 +84,17 @@ private:
 		btVector3 m_shift, m_turn;  // accumulated correction: translation, rotation vector
 		btTransform m_change;       // apply: the new pose times the old one's inverse
 	};
-	void sweepPoints(int begin, int end);
+	/// A point's Jacobian terms, fixed during a solve: n x r per side, W n x r (angular, with the
+	/// body's factors) and each side's inverse mass along the normal.
+	struct Terms
+	{
+		btVector3 m_crossA, m_crossB;
+		btVector3 m_angularA, m_angularB;
+		btScalar m_termA, m_termB;
+	};
+	void formTerms();
+	/// One sweep over the sorted points [begin, end); false if it changed no point.
+	bool sweepPoints(int begin, int end);
 	void carryByJoints();
 	int findHanging(int node);
 	btAlignedObjectArray<int> m_joints;   // node pairs
@@ -96,6 +106,7 @@ private:
 
 	btAlignedObjectArray<Body> m_bodies;
 	btAlignedObjectArray<Point> m_points;
+	btAlignedObjectArray<Terms> m_terms;  // per point, formed by formTerms
 	btAlignedObjectArray<int> m_sorted;  // point indices by layer
 	btAlignedObjectArray<int> m_layerStart;
 	btAlignedObjectArray<int> m_cursor;
