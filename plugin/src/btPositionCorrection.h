@@ -54,7 +54,6 @@ public:
 	/// Node i touches another body (it has a contact edge): its contacts, not its joints, decide
 	/// its correction.
 	void markTouching(int node) { m_touching[node] = 1; }
-	bool isTouching(int node) const { return m_touching[node] != 0; }
 	/// A joint between nodes A and B (-1: static, kinematic or outside the group).
 	void addJoint(int nodeA, int nodeB);
 
