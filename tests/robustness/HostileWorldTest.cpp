@@ -13,7 +13,11 @@
 // positions, not by adding velocity, so kinetic energy can only come from
 //   (a) the bodies' initial kinetic energy E0_i,
 //   (b) gravity: m_i g (highest_i - y_i), where highest_i is the highest the body's centre has
-//       been (placed, teleported, or lifted out of an overlap) and y_i where it is now,
+//       been (placed, teleported, or lifted out of an overlap) and y_i where it is now, both
+//       measured less the height its teleports lifted it by (HostileBody::liftedBy): a teleport
+//       keeps the velocity, so a body falling 0.9 m to 4.1 m/s and teleported up keeps the energy
+//       of that fall (without this, clean seed 134 and poisoned seeds 409, 450, 542, 742, 785 and
+//       807 were reported over the budget, stock and plugin alike),
 //   (c) the kinematic bodies: an inelastic push brings a body at most to the pusher's speed v_k;
 //       allowing for rotation and a second push, 1/2 m_i (2 v_k)^2 per body,
 //   (d) joints: a correction that moves a jointed body by up to one body extent e (1.1 m here)
@@ -30,11 +34,12 @@
 // 1e-3 kg body thrown at 1 km/s is 500 J, invisible next to a 1e6 kg body's budget).
 //
 // Count and finiteness must hold for every seed. The budget or the cap is exceeded today in
-// 1.3-1.5% of seeds (1,000 seeds, world / solver-only: 13 / 14 in float, 15 / 14 in double;
-// docs/design.md, sections 10 and 12). Stock Bullet exceeds the same bounds in 0.7-0.9% of the
-// same worlds without poison (it spreads NaN when poisoned), and the comparison test checks that
-// the plugin does not do so much more often. The test
-// fails if more than kMaxSeedsOverBoundPercent of the seeds exceed them, and prints the ones that do.
+// 0.6-0.8% of seeds (1,000 seeds, world / solver-only: 6 / 7 in float, 8 / 7 in double;
+// docs/design.md, sections 10 and 12), almost all by the speed cap: light bodies squeezed under
+// bodies 1e5-1e8 times their mass. Stock Bullet exceeds the same bounds in 0.6-0.8% of the same
+// worlds without poison (it spreads NaN when poisoned), and the comparison test checks that the
+// plugin does not do so much more often. The test fails if more than kMaxSeedsOverBoundPercent of
+// the seeds exceed them, and prints the ones that do.
 //
 // 100 seeds per mode run by default; BSP_HOSTILE_SEEDS=<n> runs n (ctest -L long: 1,000), and
 // BSP_FIRST=<k> starts at seed k (to rerun one seed a failure printed).
@@ -65,7 +70,7 @@ constexpr int kStepsPerSeed = 120;
 constexpr int kDefaultSeeds = 100;
 constexpr int kComparisonSeeds = 400;  // the plugin against stock without poison (see that test)
 constexpr int kMaxReportedFailures = 20;
-constexpr double kMaxSeedsOverBoundPercent = 2;  // measured 1.3-1.5 over 1,000 seeds (see above)
+constexpr double kMaxSeedsOverBoundPercent = 1;  // measured 0.6-0.8 over 1,000 seeds (see above)
 
 int seedCount()
 {
@@ -141,12 +146,12 @@ void runSeed(const harness::SolverSpec& solver, const scenes::HostileParams& par
 			if (record.poisoned)
 			{
 				const double top = std::max(highest.count(&body) ? highest[&body] : record.highestY, record.highestY);
-				budget += record.startKineticEnergy + mass * kGravity * (top - record.yWhenPoisoned);
+				budget += record.startKineticEnergy + mass * kGravity * (top - (record.yWhenPoisoned - record.liftedBy));
 				continue;
 			}
 			if (!isFinite(body))
 				return fail(step, "a body that was never poisoned became non-finite");
-			const double y = body.getWorldTransform().getOrigin().y();
+			const double y = body.getWorldTransform().getOrigin().y() - record.liftedBy;  // budget frame, (b)
 			double& top = highest.emplace(&body, record.highestY).first->second;
 			top = std::max(std::max(top, y), record.highestY);
 			budget += record.startKineticEnergy + mass * kGravity * (top - y) + 0.5 * mass * pushSpeed * pushSpeed;
@@ -208,10 +213,10 @@ TEST(HostileWorld, WithoutPoisonThePluginExceedsTheBoundsNoMoreOftenThanStock)
 {
 	// Stock Bullet spreads NaN from poisoned bodies (it fails the finiteness check in most seeds),
 	// so the comparison runs the same worlds without poison. Stock exceeds the same bounds too
-	// (1,000 seeds, world mode: stock 9, plugin 12 in float; stock 7, plugin 9 in double); the
+	// (1,000 seeds, world mode: stock 8, plugin 9 in float; stock 6, plugin 12 in double); the
 	// plugin may not do so much more often. At under 1% a run of 100 seeds sees stock over in 0
-	// or 1 of them and the comparison is noise (double, seeds 0-99: stock 0, plugin 2), so it
-	// runs at least 400 (double: stock 3, plugin 3).
+	// or 1 of them and the comparison is noise (double, seeds 0-99: stock 0, plugin 1), so it
+	// runs at least 400 (double: stock 2, plugin 3; float: stock 3, plugin 5).
 	scenes::HostileParams clean;
 	clean.poisonFraction = 0;
 	const int seeds = std::max(seedCount(), kComparisonSeeds);

@@ -430,9 +430,13 @@ void HostileScene::eventTeleport()
 	const btVector3 origin(btScalar(random(-kRegionHalfX, kRegionHalfX)), btScalar(random(kRegionLowY, kRegionHighY)),
 						   btScalar(random(-kRegionHalfZ, kRegionHalfZ)));
 	const btTransform xf(randomRotation(), origin);
+	const double lift = double(origin.y()) - double(b.body->getWorldTransform().getOrigin().y());
 	b.body->setWorldTransform(xf);
 	b.body->setInterpolationWorldTransform(xf);
-	b.highestY = btMax(b.highestY, double(origin.y()));
+	// Heights less the lift (HostileBody::liftedBy): a teleport up keeps the height the body has
+	// fallen from (and its velocity); one down adds to it, as a fall would.
+	if (lift > 0) b.liftedBy += lift;
+	b.highestY = btMax(b.highestY, double(origin.y()) - b.liftedBy);
 }
 
 void HostileScene::eventToggleJoint()

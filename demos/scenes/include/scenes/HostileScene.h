@@ -60,7 +60,11 @@ struct HostileBody
 	bool kinematic = false;  ///< driven by the scene
 	bool isStatic = false;   ///< the ground and the static posts
 	bool inWorld = false;    ///< currently added to the world
-	double highestY = 0;     ///< m, highest centre height it was ever placed at (start or teleport)
+	/// m, highest centre height it was ever placed at (start or teleport), less liftedBy
+	double highestY = 0;
+	/// m, how far its teleports have moved it up. A teleport keeps the velocity, so the body keeps
+	/// the energy its fall so far released: the energy budget measures its heights less this.
+	double liftedBy = 0;
 	double startKineticEnergy = 0;  ///< J, 1/2 m v^2 + 1/2 w.I w when it was created
 	double yWhenPoisoned = 0;  ///< m, centre height just before it was poisoned (if poisoned)
 };
