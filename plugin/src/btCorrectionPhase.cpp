@@ -37,6 +37,7 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 		if (m_graph.getNumIncidentEdges(i) > 0) m_correction->markTouching(i);
 	for (int i = 0; i < m_bodies.size(); ++i) m_bodies[i]->setCompanionId(i);
 	const btScalar dt = info.m_timeStep;
+	const btScalar tolerance = m_settings.m_diagnostics.m_weightConvergence * largestGravity() * dt * dt;
 	if (fraction < btScalar(0)) fraction = m_settings.m_diagnostics.m_correctionFraction;
 	for (int i = 0; i < m_manifolds.size(); ++i)
 	{
@@ -68,8 +69,12 @@ bool btShockPropagationConstraintSolver::correctPositions(const btContactSolverI
 				pointB = b->getWorldTransform() * cp.m_localPointB;
 				distance = (pointA - pointB).dot(cp.m_normalWorldOnB);
 			}
+			// Beyond the slop by more than the step's own tolerance: a resting contact sits at the
+			// slop where the last correction left it, and the velocity solve leaves each row's
+			// velocity within the corrector's convergence speed, so a depth within that speed times
+			// dt of the slop is no penetration to correct (docs/design.md, section 7).
 			const btScalar depth = -distance - slop;
-			if (!(depth > btScalar(0))) continue;
+			if (!(depth > tolerance)) continue;
 			m_correction->addPoint(e.m_bodyA, e.m_bodyB, pointA, pointB, cp.m_normalWorldOnB, fraction * depth,
 								   m_layers.getEdgeLayer(edge));
 		}
