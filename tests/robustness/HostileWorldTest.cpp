@@ -70,7 +70,7 @@ constexpr int kStepsPerSeed = 120;
 constexpr int kDefaultSeeds = 100;
 constexpr int kComparisonSeeds = 400;  // the plugin against stock without poison (see that test)
 constexpr int kMaxReportedFailures = 20;
-constexpr double kMaxSeedsOverBoundPercent = 1;  // measured 0.6-0.8 over 1,000 seeds (see above)
+constexpr double kMaxSeedsOverBoundPercent = 1;  // measured 0.5-0.8 over 1,000 seeds (see above)
 
 int seedCount()
 {
