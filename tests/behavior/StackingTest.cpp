@@ -180,3 +180,53 @@ TEST(Statistics, LayeredBodiesListEveryTowerBoxAtItsHeightFromTheGround)
 		}
 	}
 }
+
+// Known failure (docs/design.md, section 12): round towers of other proportions than the registry's
+// 16 bricks a ring at mu 0.6. Each brick rests on two below it, half a brick on each, so the tower
+// stands (statics), and the converged reference stands: stock SI with 8 sub-steps x 100 iterations
+// drifts 0.36 cm (ring of 12) and 0.51 cm (ring of 16, mu 0.9) in 10 s. The plugin collapses both
+// in world and solver-only mode (at 2.5 s and 9.1 s), while rings of 10, 14, 18 and 20 stand at
+// mu 0.6, 0.9 and 1.2. Traced (docs/history.md, section 4ah): after about 140 steps at rest, one
+// step's first predictor cycle hands a brick, through the down pass's delivery, a load its own
+// supports cannot hold; its layer visit ends unconverged, the coupled residual rises above its
+// value before the passes (0.16 -> 0.31 m/s), the cycles stop there and the corrector's 5 sweeps
+// leave the brick tipping; from then on every step gains energy. Run with
+// --gtest_also_run_disabled_tests (the reference takes about 40 s a case).
+namespace
+{
+struct RoundTowerCase
+{
+	int ring;
+	double mu;
+};
+
+class RoundTowerVariant : public ::testing::TestWithParam<RoundTowerCase>
+{
+};
+
+double roundTowerDrift(const harness::SolverSpec& solver, const RoundTowerCase& c)
+{
+	harness::Trial run(solver, "round_tower", {{"ring", double(c.ring)}, {"mu", c.mu}});
+	run.run(10.0);
+	return run.maxDrift();
+}
+}  // namespace
+
+TEST_P(RoundTowerVariant, DISABLED_StandsAsTheReferenceDoes)
+{
+	harness::SolverSpec reference = spec::stock(100);
+	reference.substeps = 8;
+	const double referenceDrift = roundTowerDrift(reference, GetParam());
+	const double world = roundTowerDrift(spec::shock(), GetParam());
+	const double solverOnly = roundTowerDrift(spec::shockSolverOnly(), GetParam());
+	std::printf("ROUND TOWER | ring %d mu %.1f | reference %.3g cm | world %.3g cm | solver-only %.3g cm\n", GetParam().ring, GetParam().mu,
+				referenceDrift * 100, world * 100, solverOnly * 100);
+	ASSERT_LT(referenceDrift, harness::kStandingDriftMeters) << "the reference must stand, else the case says nothing";
+	EXPECT_LT(world, harness::kStandingDriftMeters);
+	EXPECT_LT(solverOnly, harness::kStandingDriftMeters);
+}
+
+INSTANTIATE_TEST_SUITE_P(KnownFailure, RoundTowerVariant, ::testing::Values(RoundTowerCase{12, 0.6}, RoundTowerCase{16, 0.9}),
+						 [](const ::testing::TestParamInfo<RoundTowerCase>& info) {
+							 return "Ring" + std::to_string(info.param.ring) + "Mu" + std::to_string(int(info.param.mu * 10 + 0.5));
+						 });
