@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <ostream>
+#include <string>
+
 
 TEST(Stacking, VerticalStackOf20DriftsLessThan1cmIn10s)
 {
@@ -199,6 +203,8 @@ struct RoundTowerCase
 	int ring;
 	double mu;
 };
+
+void PrintTo(const RoundTowerCase& c, std::ostream* os) { *os << "ring " << c.ring << ", mu " << c.mu; }
 
 class RoundTowerVariant : public ::testing::TestWithParam<RoundTowerCase>
 {
