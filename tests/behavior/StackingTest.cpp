@@ -189,8 +189,8 @@ TEST(Statistics, LayeredBodiesListEveryTowerBoxAtItsHeightFromTheGround)
 // 16 bricks a ring at mu 0.6. Each brick rests on two below it, half a brick on each, so the tower
 // stands (statics), and the converged reference stands: stock SI with 8 sub-steps x 100 iterations
 // drifts 0.36 cm (ring of 12) and 0.51 cm (ring of 16, mu 0.9) in 10 s. The plugin collapses both
-// in world and solver-only mode (at 2.5 s and 9.1 s), while rings of 10, 14, 18 and 20 stand at
-// mu 0.6, 0.9 and 1.2. Traced (docs/history.md, section 4ah): after about 140 steps at rest, one
+// in world and solver-only mode (at 2.5 s and 9.1 s); solver-only, the other 16 of the 18 rings of
+// 10-20 bricks at mu 0.6, 0.9 and 1.2 stand. Traced (docs/history.md, section 4ah): after about 140 steps at rest, one
 // step's first predictor cycle hands a brick, through the down pass's delivery, a load its own
 // supports cannot hold; its layer visit ends unconverged, the coupled residual rises above its
 // value before the passes (0.16 -> 0.31 m/s), the cycles stop there and the corrector's 5 sweeps
